@@ -1,0 +1,161 @@
+# mcbox - the only entry point. `make help` lists the targets.
+#
+# Layout of the build: the libraries of mc/, samplers/, pdf/ and render/ are
+# separate static archives, linked in layer order (render, pdf, samplers,
+# mc), so a lower layer that calls up into a higher one fails to link.
+# Variants never share objects: the default build goes to build/, clang to
+# build/clang/, the sanitizer build (SAN=1) to build/san/ (or
+# build/clang-san/), NATIVE=1 to build/native/.
+
+.SUFFIXES:
+.DELETE_ON_ERROR:
+.SECONDARY:
+
+CC ?= cc
+CFLAGS ?= -O2 -g
+LDFLAGS ?=
+SAN ?= 0
+NATIVE ?= 0
+JUNIT ?= 0
+
+compiler := $(notdir $(firstword $(CC)))
+variant := $(if $(filter clang%,$(compiler)),clang)
+variant := $(variant)$(if $(filter 1,$(SAN)),$(if $(variant),-)san)
+variant := $(variant)$(if $(filter 1,$(NATIVE)),$(if $(variant),-)native)
+B := build$(if $(variant),/$(variant))
+
+WARN := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wdouble-promotion
+MODE :=
+ifeq ($(SAN),1)
+MODE += -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+endif
+ifeq ($(NATIVE),1)
+MODE += -march=native
+endif
+ALL_CFLAGS = -std=c17 $(WARN) -I. -fopenmp $(MODE) -MMD -MP $(CFLAGS)
+ALL_LDFLAGS = -fopenmp $(MODE) $(LDFLAGS)
+# Debian's library names; no pkg-config at parse time, because `make deps`
+# may be what installs pkg-config.
+LIBS := -lgsl -lgslcblas -lpng -lm
+TEST_LIBS := -lcmocka
+
+# Debian packages the project needs (see `make deps`).
+DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox pandoc libpng-dev
+
+LAYERS := render pdf samplers mc
+lib_srcs = $(wildcard $(1)/*.c)
+lib_objs = $(patsubst %.c,$(B)/obj/%.o,$(call lib_srcs,$(1)))
+LIBFILES := $(foreach l,$(LAYERS),$(B)/lib/lib$(l).a)
+
+APP_SRCS := $(wildcard examples/common/*.c)
+APP_LIB := $(B)/lib/libapp.a
+PROGRAMS := $(patsubst examples/%.c,$(B)/bin/%,$(wildcard examples/*.c))
+BENCHES := $(patsubst bench/%.c,$(B)/bench/%,$(wildcard bench/*.c))
+SUPPORT_SRCS := $(wildcard tests/support/*.c)
+SUPPORT_LIB := $(B)/lib/libtestsupport.a
+TESTS := $(patsubst tests/%.c,$(B)/tests/%,$(wildcard tests/test_*.c))
+
+.PHONY: all help deps test run bench soak plots plots-check book clean \
+        _test _run _bench _soak _plots _plots-check _book programs tests
+
+all: $(LIBFILES) $(PROGRAMS) $(BENCHES)
+
+help:
+	@echo "make [all]     build the libraries and every program into build/"
+	@echo "make test      install missing packages, build, run every test (SAN=1: sanitizers, JUNIT=1: XML)"
+	@echo "make run       install missing packages, run every chapter program, print one table"
+	@echo "make bench     throughput benchmarks"
+	@echo "make soak      the statistical tests over SEEDS seeds; prints the failure rate"
+	@echo "make plots     every figure under build/plots/"
+	@echo "make book      the tutorial as HTML under build/book/"
+	@echo "make deps      install the Debian packages the project needs, when missing"
+	@echo "make clean     remove build/"
+
+deps:
+	@sh tools/deps.sh $(DEB_PACKAGES)
+
+# The public targets first make sure the packages are there, then build in a
+# second make so that `-j` cannot start compiling before the install ends.
+test: deps
+	@$(MAKE) --no-print-directory _test
+run: deps
+	@$(MAKE) --no-print-directory _run
+bench: deps
+	@$(MAKE) --no-print-directory _bench
+soak: deps
+	@$(MAKE) --no-print-directory _soak
+plots: deps
+	@$(MAKE) --no-print-directory _plots
+plots-check: deps
+	@$(MAKE) --no-print-directory _plots-check
+book: deps
+	@$(MAKE) --no-print-directory _book
+
+programs: $(PROGRAMS)
+tests: $(TESTS)
+
+_test: all $(TESTS)
+	@MC_BUILD=$(B) JUNIT=$(JUNIT) bash tools/run_tests.sh $(TESTS)
+
+_run: all
+	@MC_BUILD=$(B) bash tools/run_table.sh
+
+_bench: all
+	@MC_BUILD=$(B) bash tools/run_bench.sh
+
+SEEDS ?= 20
+_soak: all $(TESTS)
+	@MC_BUILD=$(B) bash tools/soak.sh $(SEEDS) $(TESTS)
+
+_plots: all
+	@if [ -f plots/Makefile.inc ]; then $(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) figures; \
+	 else echo "make plots: not yet"; fi
+_plots-check: all
+	@if [ -f plots/Makefile.inc ]; then $(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) check; \
+	 else echo "make plots-check: not yet"; fi
+_book: all
+	@if [ -f book/Makefile.inc ]; then $(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) html; \
+	 else echo "make book: not yet"; fi
+
+clean:
+	rm -rf build
+
+# --- compilation -----------------------------------------------------------
+$(B)/obj/%.o: %.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+define layer_rule
+$(B)/lib/lib$(1).a: $(call lib_objs,$(1))
+	@mkdir -p $$(@D)
+	rm -f $$@
+	$$(if $$^,ar rcs $$@ $$^,ar rcs $$@)
+endef
+$(foreach l,$(LAYERS),$(eval $(call layer_rule,$(l))))
+
+$(APP_LIB): $(patsubst %.c,$(B)/obj/%.o,$(APP_SRCS))
+	@mkdir -p $(@D)
+	rm -f $@
+	ar rcs $@ $^
+
+$(SUPPORT_LIB): $(patsubst %.c,$(B)/obj/%.o,$(SUPPORT_SRCS))
+	@mkdir -p $(@D)
+	rm -f $@
+	ar rcs $@ $^
+
+# Link order is the layer order: a wrong-way call is an undefined symbol.
+LINK_LAYERS := $(foreach l,$(LAYERS),$(B)/lib/lib$(l).a)
+
+$(B)/bin/%: $(B)/obj/examples/%.o $(APP_LIB) $(LIBFILES)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_LDFLAGS) $< $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
+
+$(B)/bench/%: $(B)/obj/bench/%.o $(APP_LIB) $(LIBFILES)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_LDFLAGS) $< $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
+
+$(B)/tests/%: $(B)/obj/tests/%.o $(SUPPORT_LIB) $(LIBFILES)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_LDFLAGS) $< $(SUPPORT_LIB) $(LINK_LAYERS) $(LIBS) $(TEST_LIBS) -o $@
+
+-include $(shell find $(B)/obj -name '*.d' 2>/dev/null)

@@ -1,0 +1,208 @@
+/* examples/common/cli.c - option parsing, errors, the result table. */
+#include "examples/common/cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+_Noreturn void app_fail(const char *prog, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "%s: ", prog);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    exit(2);
+}
+
+bool app_parse_double(const char *s, double *out)
+{
+    if (!s || !*s)
+        return false;
+    char *end = NULL;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno == ERANGE || *end || end == s || !isfinite(v))
+        return false;
+    *out = v;
+    return true;
+}
+
+bool app_parse_count(const char *s, uint64_t max, uint64_t *out)
+{
+    double v;
+    /* strtod accepts "1e6"; the checks below make sure the value is a whole
+     * number small enough to be exact in a double (max <= 2^53). */
+    if (!s || *s == '-' || *s == '+' || !app_parse_double(s, &v))
+        return false;
+    if (v < 1.0 || v > (double)max || v != floor(v))
+        return false;
+    *out = (uint64_t)v;
+    return true;
+}
+
+bool app_parse_seed(const char *s, uint64_t *out)
+{
+    if (!s || !*s || *s == '-' || *s == '+')
+        return false;
+    char *end = NULL;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 0);
+    if (errno || *end || end == s)
+        return false;
+    *out = (uint64_t)v;
+    return true;
+}
+
+static void print_help(const char *prog, const char *usage, const app_opt *opts, size_t n)
+{
+    printf("usage: %s\n\n", usage);
+    for (size_t i = 0; i < n; i++) {
+        const app_opt *o = &opts[i];
+        const char *arg = o->kind == APP_FLAG ? "" : (o->kind == APP_COUNT ? " N" : " VALUE");
+        printf("  %s%s\n      %s", o->name, arg, o->help);
+        if (o->kind == APP_CHOICE) {
+            printf(" (");
+            for (const char *const *c = o->choices; *c; c++)
+                printf("%s%s", *c, c[1] ? "|" : "");
+            printf(")");
+        }
+        printf("\n");
+    }
+    printf("  --help\n      print this help and exit\n  --version\n      print the version and exit\n");
+}
+
+static void set_value(const char *prog, const app_opt *o, const char *v)
+{
+    switch (o->kind) {
+    case APP_FLAG:
+        *(bool *)o->dest = true;
+        return;
+    case APP_COUNT:
+        if (!app_parse_count(v, APP_MAX_SAMPLES, o->dest))
+            app_fail(prog, "%s: '%s' is not a whole number from 1 to 1e13", o->name, v);
+        return;
+    case APP_SEED:
+        if (!app_parse_seed(v, o->dest))
+            app_fail(prog, "%s: '%s' is not an unsigned 64-bit integer", o->name, v);
+        return;
+    case APP_INT: {
+        double d;
+        if (!app_parse_double(v, &d) || d != floor(d) || d < o->min || d > o->max)
+            app_fail(prog, "%s: '%s' is not a whole number from %g to %g", o->name, v, o->min, o->max);
+        *(int *)o->dest = (int)d;
+        return;
+    }
+    case APP_DOUBLE: {
+        double d;
+        if (!app_parse_double(v, &d) || d < o->min || d > o->max)
+            app_fail(prog, "%s: '%s' is not a number from %g to %g", o->name, v, o->min, o->max);
+        *(double *)o->dest = d;
+        return;
+    }
+    case APP_CHOICE:
+        for (const char *const *c = o->choices; *c; c++) {
+            if (strcmp(*c, v) == 0) {
+                *(const char **)o->dest = *c;
+                return;
+            }
+        }
+        app_fail(prog, "%s: unknown value '%s'", o->name, v);
+    case APP_STRING:
+        if (!*v)
+            app_fail(prog, "%s: empty value", o->name);
+        *(const char **)o->dest = v;
+        return;
+    }
+}
+
+int app_parse(const char *prog, const char *usage, int argc, char **argv, const app_opt *opts,
+              size_t n, const char **positional, int max_positional)
+{
+    int npos = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            print_help(prog, usage, opts, n);
+            exit(0);
+        }
+        if (strcmp(a, "--version") == 0) {
+            printf("%s (mcbox) %s\n", prog, APP_VERSION);
+            exit(0);
+        }
+        if (a[0] != '-' || a[1] == '\0') {
+            if (!positional || npos >= max_positional)
+                app_fail(prog, "unexpected argument '%s' (see --help)", a);
+            positional[npos++] = a;
+            continue;
+        }
+        /* Accept both "--name value" and "--name=value". */
+        const char *eq = strchr(a, '=');
+        size_t len = eq ? (size_t)(eq - a) : strlen(a);
+        const app_opt *o = NULL;
+        for (size_t k = 0; k < n; k++)
+            if (strlen(opts[k].name) == len && strncmp(opts[k].name, a, len) == 0)
+                o = &opts[k];
+        if (!o)
+            app_fail(prog, "unknown option '%.*s' (see --help)", (int)len, a);
+        if (o->kind == APP_FLAG) {
+            if (eq)
+                app_fail(prog, "%s takes no value", o->name);
+            set_value(prog, o, NULL);
+            continue;
+        }
+        const char *v = eq ? eq + 1 : (i + 1 < argc ? argv[++i] : NULL);
+        if (!v)
+            app_fail(prog, "%s needs a value", o->name);
+        set_value(prog, o, v);
+    }
+    return npos;
+}
+
+void app_table_begin(const app_table *t)
+{
+    if (t->csv) {
+        fprintf(t->out, "method,n,estimate,stderr,exact,z");
+        for (size_t i = 0; i < t->n_extra; i++)
+            fprintf(t->out, ",%s", t->extra_cols[i]);
+    } else {
+        fprintf(t->out, "%-14s %14s %18s %12s %18s %8s", "method", "n", "estimate", "stderr", "exact", "z");
+        for (size_t i = 0; i < t->n_extra; i++)
+            fprintf(t->out, " %14s", t->extra_cols[i]);
+    }
+    fputc('\n', t->out);
+}
+
+void app_table_row(const app_table *t, const char *method, mc_estimate e, double exact,
+                   const double *extra)
+{
+    bool has_exact = !isnan(exact);
+    bool has_z = has_exact && e.std_error > 0.0;
+    double z = has_z ? mc_z_score(e.value, exact, e.std_error) : 0.0;
+    if (t->csv) {
+        fprintf(t->out, "%s,%llu,%.17g,%.17g,", method, (unsigned long long)e.n, e.value, e.std_error);
+        if (has_exact)
+            fprintf(t->out, "%.17g", exact);
+        fputc(',', t->out);
+        if (has_z)
+            fprintf(t->out, "%.6g", z);
+        for (size_t i = 0; i < t->n_extra; i++)
+            fprintf(t->out, ",%.17g", extra[i]);
+    } else {
+        fprintf(t->out, "%-14s %14llu %18.12f %12.3e ", method, (unsigned long long)e.n, e.value, e.std_error);
+        if (has_exact)
+            fprintf(t->out, "%18.12f ", exact);
+        else
+            fprintf(t->out, "%18s ", "-");
+        if (has_z)
+            fprintf(t->out, "%8.3f", z);
+        else
+            fprintf(t->out, "%8s", "-");
+        for (size_t i = 0; i < t->n_extra; i++)
+            fprintf(t->out, " %14.6g", extra[i]);
+    }
+    fputc('\n', t->out);
+}

@@ -1,0 +1,90 @@
+/* examples/common/cli.h - the command-line conventions of every mcbox
+ * program, in one place.
+ *
+ * Programs (not the library) print and exit. This module parses options
+ * from a table, answers --help and --version, and turns every bad input
+ * into one line "prog: what is wrong" on stderr and exit status 2. It also
+ * prints the result table every chapter program shares: a readable table by
+ * default, or with --csv the header line then one row per method with the
+ * columns method,n,estimate,stderr,exact,z (then any extra columns).
+ */
+#ifndef APP_CLI_H
+#define APP_CLI_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "mc/stats.h"
+
+#define APP_VERSION "0.1.0"
+
+/* Largest accepted --samples: 10^13 keeps every 64-bit counter and every
+ * double-precision sample index exact. */
+#define APP_MAX_SAMPLES 10000000000000ULL
+
+typedef enum app_opt_kind {
+    APP_FLAG,   /* bool *: set when present, takes no value */
+    APP_COUNT,  /* uint64_t *: 1 .. APP_MAX_SAMPLES, accepts 1e6 style */
+    APP_SEED,   /* uint64_t *: any unsigned 64-bit integer, decimal or 0x hex */
+    APP_INT,    /* int *: within [min, max] */
+    APP_DOUBLE, /* double *: finite, within [min, max] */
+    APP_CHOICE, /* const char **: one of the NULL-terminated `choices` */
+    APP_STRING  /* const char **: any non-empty string */
+} app_opt_kind;
+
+typedef struct app_opt {
+    const char *name;           /* long name with the dashes: "--samples" */
+    app_opt_kind kind;
+    void *dest;                 /* where the value goes (type per kind) */
+    const char *help;           /* one line for --help */
+    const char *const *choices; /* APP_CHOICE only */
+    double min, max;            /* APP_INT, APP_DOUBLE bounds */
+} app_opt;
+
+/* Parses argv against opts[0..n). Handles --help (prints `usage` and the
+ * option list to stdout, exits 0) and --version (exits 0). On any error
+ * (unknown option, missing or malformed value, out of range) prints one line
+ * "prog: ..." to stderr and exits 2. Positional arguments are not allowed
+ * unless `positional` is not NULL: then they are stored there in order
+ * (at most max_positional, else an error) and their count returned. */
+int app_parse(const char *prog, const char *usage, int argc, char **argv, const app_opt *opts,
+              size_t n, const char **positional, int max_positional);
+
+/* Parses a sample count like "1000", "1e6", "2.5e3" (an exact integer
+ * within 1 .. max). Returns false for anything else. */
+bool app_parse_count(const char *s, uint64_t max, uint64_t *out);
+
+/* Parses an unsigned 64-bit seed (decimal or 0x hex). */
+bool app_parse_seed(const char *s, uint64_t *out);
+
+/* Parses a finite double with nothing after it. */
+bool app_parse_double(const char *s, double *out);
+
+/* Prints "prog: message" to stderr and exits with status 2. */
+_Noreturn void app_fail(const char *prog, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* The shared result table. extra_cols (may be NULL) names columns printed
+ * after z. */
+typedef struct app_table {
+    FILE *out;
+    bool csv;
+    const char *const *extra_cols;
+    size_t n_extra;
+} app_table;
+
+/* Prints the header (CSV header line, or the table's title row). */
+void app_table_begin(const app_table *t);
+
+/* Prints one row: method, e.n, e.value, e.std_error, exact (NaN: unknown,
+ * printed empty), z = (value - exact) / std_error (empty when exact is
+ * unknown or std_error is 0), then extra[0..n_extra). */
+void app_table_row(const app_table *t, const char *method, mc_estimate e, double exact,
+                   const double *extra);
+
+#endif /* APP_CLI_H */

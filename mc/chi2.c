@@ -1,0 +1,71 @@
+/* mc/chi2.c - Pearson statistic with pooling, GSL tail, Sidak level. */
+#include "mc/chi2.h"
+
+#include <math.h>
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_errno.h>
+
+mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, double min_expected)
+{
+    mc_chi2_result r = {0.0, 0, 1.0, 0u, 0.0, 0.0, 0.0};
+    double pool_obs = 0.0, pool_exp = 0.0;
+    size_t big_cells = 0u;
+    size_t smallest = n; /* index of the smallest cell kept apart */
+
+    for (size_t i = 0; i < n; i++) {
+        r.obs_total += obs[i];
+        r.exp_total += exp[i];
+        if (exp[i] <= 0.0) {
+            r.obs_in_zero_cells += obs[i];
+        } else if (exp[i] < min_expected) {
+            pool_obs += obs[i];
+            pool_exp += exp[i];
+            r.cells_pooled++;
+        } else {
+            big_cells++;
+            if (smallest == n || exp[i] < exp[smallest])
+                smallest = i;
+        }
+    }
+    /* A pool that is itself too sparse borrows the smallest regular cell, so
+     * that no term of the sum has an expected count below min_expected. */
+    int merge_smallest = pool_exp > 0.0 && pool_exp < min_expected && smallest < n;
+    if (merge_smallest) {
+        pool_obs += obs[smallest];
+        pool_exp += exp[smallest];
+        big_cells--;
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (exp[i] < min_expected || (merge_smallest && i == smallest))
+            continue;
+        double d = obs[i] - exp[i];
+        r.stat += d * d / exp[i];
+    }
+    size_t cells = big_cells;
+    if (pool_exp > 0.0) {
+        double d = pool_obs - pool_exp;
+        r.stat += d * d / pool_exp;
+        cells++;
+    }
+    r.dof = cells >= 2u ? (int)cells - 1 : 0;
+    r.pvalue = r.dof > 0 ? mc_chi2_pvalue(r.stat, r.dof) : 1.0;
+    return r;
+}
+
+double mc_chi2_pvalue(double stat, int dof)
+{
+    if (!(stat > 0.0))
+        return 1.0;
+    /* GSL's default handler aborts the process on a domain error; a library
+     * must return instead. The switch is idempotent. */
+    gsl_set_error_handler_off();
+    return gsl_cdf_chisq_Q(stat, (double)dof);
+}
+
+double mc_sidak_alpha(double alpha, int m)
+{
+    /* 1 - (1 - alpha)^(1/m) computed as -expm1(log1p(-alpha) / m): the naive
+     * form loses most digits when alpha / m is tiny. */
+    return -expm1(log1p(-alpha) / (double)m);
+}

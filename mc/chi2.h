@@ -1,0 +1,48 @@
+/* mc/chi2.h - Pearson's chi-square goodness-of-fit test, the pieces.
+ *
+ * The sampler tests histogram N samples into cells, integrate the claimed
+ * pdf over each cell to get expected counts, and ask whether the observed
+ * counts could plausibly come from it. This module does the last step:
+ * pooling of sparse cells, the statistic, its upper-tail probability (GSL),
+ * and the Sidak-corrected level for a suite of many tests. Histogramming
+ * and integration live with the callers (tests/support). Serves chapter 5
+ * ("Generating Random Directions") and every sampler after it.
+ */
+#ifndef MC_CHI2_H
+#define MC_CHI2_H
+
+#include <stddef.h>
+
+/* Outcome of one Pearson test. */
+typedef struct mc_chi2_result {
+    double stat;             /* sum over pooled cells of (obs - exp)^2 / exp */
+    int dof;                 /* degrees of freedom: pooled cells - 1 (0 if < 2 cells) */
+    double pvalue;           /* P(chi2_dof >= stat); 1 when dof == 0 */
+    size_t cells_pooled;     /* cells with expected < min_expected merged into one */
+    double obs_in_zero_cells;/* samples observed where the expected count is 0 */
+    double obs_total;        /* total observed count */
+    double exp_total;        /* total expected count */
+} mc_chi2_result;
+
+/* Pearson's test of observed counts obs[0..n) against expected counts
+ * exp[0..n) (n >= 1, all finite and >= 0). Cells with exp < min_expected
+ * (5 is the textbook rule) are pooled into one cell; if that pool's
+ * expected count is still below min_expected it is merged with the
+ * smallest remaining cell. Cells whose expected count is exactly 0 are left
+ * out of the statistic and their observations reported in
+ * obs_in_zero_cells, for the caller to judge (samples where the pdf says
+ * none can fall is a failure no p-value should dilute). No allocation. */
+mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, double min_expected);
+
+/* The upper tail P(X >= stat) for X chi-square with dof degrees of freedom,
+ * computed directly by gsl_cdf_chisq_Q (not 1 - P, which loses every digit
+ * below 1e-16). GSL's aborting error handler is switched off. dof >= 1;
+ * returns 1 for stat <= 0. */
+double mc_chi2_pvalue(double stat, int dof);
+
+/* The per-test significance level that keeps the probability of one or more
+ * false rejections among m independent tests at alpha (Sidak):
+ * 1 - (1 - alpha)^(1/m). 0 < alpha < 1, m >= 1. */
+double mc_sidak_alpha(double alpha, int m);
+
+#endif /* MC_CHI2_H */

@@ -1,0 +1,54 @@
+/* tests/support/mc_test.c - seeds, near-equality and z-test assertions. */
+#include "tests/support/mc_test.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "mc/stats.h"
+
+uint64_t mc_test_seed(uint64_t default_seed)
+{
+    const char *s = getenv("MC_TEST_SEED");
+    if (!s || !*s)
+        return default_seed;
+    char *end = NULL;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 0);
+    if (errno || *end) {
+        fprintf(stderr, "MC_TEST_SEED=%s is not an unsigned integer; using defaults\n", s);
+        return default_seed;
+    }
+    /* SplitMix64 of the pair keeps tests with different defaults apart. */
+    uint64_t x = (uint64_t)v * UINT64_C(0x9e3779b97f4a7c15) ^ default_seed;
+    x = (x ^ (x >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
+    x = (x ^ (x >> 27)) * UINT64_C(0x94d049bb133111eb);
+    return x ^ (x >> 31);
+}
+
+void mc_assert_near_impl(double a, double b, double tol, const char *sa, const char *sb,
+                         const char *file, int line)
+{
+    if (fabs(a - b) <= tol)
+        return;
+    print_error("%s = %.17g and %s = %.17g differ by %.3g > %.3g\n", sa, a, sb, b, fabs(a - b), tol);
+    _fail(file, line);
+}
+
+void mc_assert_z_impl(const char *label, double estimate, double exact, double std_error,
+                      double threshold, uint64_t seed, const char *file, int line)
+{
+    double z = mc_z_score(estimate, exact, std_error);
+    if (fabs(z) < threshold)
+        return;
+    print_error("%s: estimate %.12g, exact %.12g, stderr %.3g, z = %.3g (|z| must be < %g), seed %llu\n",
+                label, estimate, exact, std_error, z, threshold, (unsigned long long)seed);
+    _fail(file, line);
+}
+
+const char *mc_test_build_dir(void)
+{
+    const char *b = getenv("MC_BUILD");
+    return b && *b ? b : "build";
+}

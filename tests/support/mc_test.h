@@ -1,0 +1,42 @@
+/* tests/support/mc_test.h - what every mcbox test program shares.
+ *
+ * Include after <cmocka.h>'s prerequisites; this header includes them.
+ * Seeds: every statistical test takes its seed from mc_test_seed(default).
+ * With MC_TEST_SEED=S in the environment each default d is replaced by a
+ * seed derived from (S, d), so a soak run over many S measures the suite's
+ * false-alarm rate while tests stay independent of one another.
+ */
+#ifndef MC_TEST_H
+#define MC_TEST_H
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+/* The seed a statistical test uses: default_seed, or derived from
+ * $MC_TEST_SEED when that is set. */
+uint64_t mc_test_seed(uint64_t default_seed);
+
+/* Fails the test unless |a - b| <= tol (doubles; cmocka 1.1.5's
+ * assert_float_equal casts to float). NaN never passes. */
+#define assert_near(a, b, tol) mc_assert_near_impl((a), (b), (tol), #a, #b, __FILE__, __LINE__)
+void mc_assert_near_impl(double a, double b, double tol, const char *sa, const char *sb,
+                         const char *file, int line);
+
+/* The z-test every estimator test uses: fails unless
+ * |estimate - exact| / std_error < threshold, printing the label, the
+ * numbers and the seed. Threshold 4 has a two-sided false-alarm rate of
+ * 6.3e-5 per test for a normal statistic. */
+#define assert_z_below(label, estimate, exact, std_error, threshold, seed)                          \
+    mc_assert_z_impl((label), (estimate), (exact), (std_error), (threshold), (seed), __FILE__, __LINE__)
+void mc_assert_z_impl(const char *label, double estimate, double exact, double std_error,
+                      double threshold, uint64_t seed, const char *file, int line);
+
+/* The directory holding the build under test ($MC_BUILD, default "build"). */
+const char *mc_test_build_dir(void);
+
+#endif /* MC_TEST_H */

@@ -1,0 +1,23 @@
+#!/bin/sh
+# Installs the Debian packages given as arguments when some are missing.
+# Cheap when everything is there: one pkg-config check and two `command -v`,
+# no apt call. As root it uses apt-get; otherwise sudo apt-get.
+set -eu
+if command -v pkg-config >/dev/null 2>&1 &&
+   pkg-config --exists cmocka gsl libpng 2>/dev/null &&
+   command -v cc >/dev/null 2>&1 && command -v gnuplot >/dev/null 2>&1 &&
+   command -v pandoc >/dev/null 2>&1; then
+    exit 0
+fi
+missing=""
+for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -n "$missing" ] || exit 0
+if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
+echo "make deps: installing$missing"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+# shellcheck disable=SC2086
+$SUDO apt-get install -y -qq --no-install-recommends $missing
+echo "make deps: installed$missing"

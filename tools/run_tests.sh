@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Runs the cmocka test programs given as arguments, two at a time, prints
+# each group's output in order, then one closing line "N passed, N failed"
+# summed over every group. With JUNIT=1 each group also writes cmocka's
+# JUnit XML to $MC_BUILD/test-results/<group>.xml.
+# Environment passed to the tests: MC_BUILD (the build directory, where the
+# programs under test live), MC_TEST_SEED (optional seed override).
+set -u
+build=${MC_BUILD:-build}
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+jobs_max=${MC_TEST_JOBS:-2}
+if [ "${JUNIT:-0}" = 1 ]; then
+    mkdir -p "$build/test-results"
+    rm -f "$build/test-results"/*.xml
+fi
+
+run_one() { # $1 = test program; writes $logs/<name>.log and .rc
+    local t=$1 name
+    name=$(basename "$t")
+    if [ "${JUNIT:-0}" = 1 ]; then
+        CMOCKA_MESSAGE_OUTPUT=xml CMOCKA_XML_FILE="$build/test-results/%g.xml" \
+            MC_BUILD="$build" "$t" >"$logs/$name.log" 2>&1
+    else
+        MC_BUILD="$build" "$t" >"$logs/$name.log" 2>&1
+    fi
+    echo $? >"$logs/$name.rc"
+}
+
+running=0
+for t in "$@"; do
+    run_one "$t" &
+    running=$((running + 1))
+    if [ "$running" -ge "$jobs_max" ]; then
+        wait -n
+        running=$((running - 1))
+    fi
+done
+wait
+
+passed=0 failed=0
+for t in "$@"; do
+    name=$(basename "$t")
+    rc=$(cat "$logs/$name.rc" 2>/dev/null || echo 1)
+    cat "$logs/$name.log"
+    p="" f=""
+    if [ "${JUNIT:-0}" = 1 ]; then
+        for x in "$build/test-results/"*.xml; do
+            [ -f "$x" ] || continue
+            grep -q "name=\"$name\"" "$x" 2>/dev/null || continue
+            n=$(grep -o '<testsuite [^>]*' "$x" | grep -o ' tests="[0-9]*"' | grep -o '[0-9]*' | head -1)
+            fl=$(grep -o '<testsuite [^>]*' "$x" | grep -o ' failures="[0-9]*"' | grep -o '[0-9]*' | head -1)
+            er=$(grep -o '<testsuite [^>]*' "$x" | grep -o ' errors="[0-9]*"' | grep -o '[0-9]*' | head -1)
+            f=$(( ${fl:-0} + ${er:-0} )); p=$(( ${n:-0} - f ))
+        done
+    else
+        p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$logs/$name.log" | tail -1)
+        f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$logs/$name.log" | tail -1)
+    fi
+    if [ -z "$p" ] && [ -z "$f" ]; then
+        # No summary: the program crashed or could not start. One failure.
+        echo "$name: no cmocka summary (exit status $rc): counted as 1 failed"
+        p=0 f=1
+    fi
+    p=${p:-0} f=${f:-0}
+    if [ "$rc" != 0 ] && [ "$f" = 0 ]; then
+        echo "$name: exit status $rc with no failed test: counted as 1 failed"
+        f=1
+    fi
+    passed=$((passed + p)) failed=$((failed + f))
+done
+grep -h '^negative controls: caught' "$logs"/*.log 2>/dev/null
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]
