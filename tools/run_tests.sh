@@ -69,6 +69,9 @@ for t in "$@"; do
     fi
     passed=$((passed + p)) failed=$((failed + f))
 done
-grep -h '^negative controls: caught' "$logs"/*.log 2>/dev/null
+# One total over every group that ran negative controls.
+grep -h '^negative controls: caught [0-9]*/[0-9]*' "$logs"/*.log 2>/dev/null |
+    sed 's/^negative controls: caught \([0-9]*\)\/\([0-9]*\).*/\1 \2/' |
+    awk '{ k += $1; m += $2 } END { if (m > 0) printf "negative controls: caught %d/%d\n", k, m }'
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
