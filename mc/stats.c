@@ -63,7 +63,7 @@ double mc_z_score(double estimate, double exact, double std_error)
         return diff / std_error;
     if (diff == 0.0)
         return 0.0;
-    return diff > 0.0 ? INFINITY : -INFINITY;
+    return diff > 0.0 ? HUGE_VAL : -HUGE_VAL;
 }
 
 double mc_z_pvalue(double z)

@@ -57,7 +57,7 @@ bool app_parse_seed(const char *s, uint64_t *out)
     return true;
 }
 
-static void print_help(const char *prog, const char *usage, const app_opt *opts, size_t n)
+static void print_help(const char *usage, const app_opt *opts, size_t n)
 {
     printf("usage: %s\n\n", usage);
     for (size_t i = 0; i < n; i++) {
@@ -126,7 +126,7 @@ int app_parse(const char *prog, const char *usage, int argc, char **argv, const 
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            print_help(prog, usage, opts, n);
+            print_help(usage, opts, n);
             exit(0);
         }
         if (strcmp(a, "--version") == 0) {

@@ -1,0 +1,76 @@
+/* examples/pi.c - chapter 1, "A Simple Monte Carlo Program": estimate pi
+ * from the fraction of random points of a square that fall in the inscribed
+ * circle, plainly and with stratified (jittered) points.
+ *
+ * What it shows: the plain estimate's error shrinks like N^-1/2 (the
+ * `running` rows), and at 10^8 samples the jittered grid is about 100 times
+ * more accurate than plain sampling: the book's 3.1415 against 3.14159. The
+ * abs_error column is |estimate - pi|.
+ *
+ * Build and run:  make all && build/bin/pi --method all
+ *                 build/bin/pi --method stratified --samples 1e9 --threads 2
+ */
+#include <math.h>
+#include <string.h>
+
+#include "examples/common/cli.h"
+#include "mc/constants.h"
+#include "mc/pi.h"
+
+static const char *const methods[] = {"plain", "stratified", "running", "all", NULL};
+static const char *const extra_cols[] = {"abs_error"};
+
+static void row(const app_table *t, const char *method, mc_estimate e)
+{
+    double abs_error = fabs(e.value - MC_PI);
+    app_table_row(t, method, e, MC_PI, &abs_error);
+}
+
+/* The book's endless loop, made finite: one stream, one point at a time,
+ * printing the estimate after 10, 100, 1000, ... points (and after n). */
+static void running(const app_table *t, uint64_t seed, uint64_t n)
+{
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    uint64_t done = 0, hits = 0;
+    for (uint64_t next = 10; done < n; next = next <= n / 10 ? next * 10 : n) {
+        if (next > n)
+            next = n;
+        hits += mc_pi_hits_scalar(&rng, next - done);
+        done = next;
+        row(t, "running", mc_pi_from_hits(hits, done));
+    }
+}
+
+int main(int argc, char **argv)
+{
+    uint64_t n = 100000000u, seed = 1u;
+    const char *method = "all";
+    bool csv = false;
+    int threads = 0;
+    const app_opt opts[] = {
+        {"--samples", APP_COUNT, &n, "number of points (default 1e8)", NULL, 0, 0},
+        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        {"--method", APP_CHOICE, &method, "estimator (default all)", methods, 0, 0},
+        {"--threads", APP_INT, &threads, "OpenMP threads, 0 = all (default 0)", NULL, 0, 1024},
+        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+    };
+    app_parse("pi", "pi [--method plain|stratified|running|all] [--samples N] [--seed S] [--csv]",
+              argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+
+    app_table t = {stdout, csv, extra_cols, 1};
+    app_table_begin(&t);
+    bool all = strcmp(method, "all") == 0;
+    mc_estimate plain = {0, 0.0, 0.0, 0.0}, strat = plain;
+    if (all || strcmp(method, "plain") == 0)
+        row(&t, "plain", plain = mc_pi_plain(seed, n, threads, NULL));
+    if (all || strcmp(method, "stratified") == 0)
+        row(&t, "stratified", strat = mc_pi_stratified(seed, n, threads, NULL));
+    if (all || strcmp(method, "running") == 0)
+        running(&t, seed, n);
+    if (all && !csv && strat.std_error > 0.0)
+        printf("\nplain vs stratified at n = %llu: standard error %.2e vs %.2e (%.0fx; the\n"
+               "stratified bar is about 1.5x conservative), actual error %.2e vs %.2e\n",
+               (unsigned long long)n, plain.std_error, strat.std_error,
+               plain.std_error / strat.std_error, fabs(plain.value - MC_PI), fabs(strat.value - MC_PI));
+    return 0;
+}

@@ -1,0 +1,395 @@
+/* tests/test_cli.c - the command-line contract of every program in
+ * $MC_BUILD/bin, whoever wrote it: bad input exits with status 2, prints
+ * exactly one line on stderr starting with the program's name and nothing
+ * on stdout; --help and --version exit 0.
+ *
+ * Programs are found at run time (one cmocka test each), so programs added
+ * later are covered without editing this file. The cases depend on what
+ * the program's --help mentions: an unknown flag and a missing value
+ * always; --samples -3, abc, 0 and 1e30 when it takes --samples; --seed x
+ * when it takes --seed. When the help shows subcommands (see
+ * subcommands()), the cases are also run after each of them, whose own
+ * --help decides which apply. Each run has a 20 s timeout. Fake programs that break
+ * the contract in each way are the negative controls.
+ */
+#define _POSIX_C_SOURCE 200809L /* posix_spawn, mkdtemp, strdup, kill */
+
+#include "tests/support/mc_test.h"
+
+#include <ctype.h>
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "tests/support/negctl.h"
+
+extern char **environ;
+
+#define TIMEOUT_S 20.0
+#define CAPTURE 16384
+#define MAX_PROGRAMS 256
+
+typedef struct run {
+    int status; /* exit status, or -1 (signal, timeout, spawn failure) */
+    char out[CAPTURE], err[CAPTURE];
+    size_t out_len, err_len;
+} run;
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* Appends what fd has to buf (truncating at CAPTURE - 1); false at EOF. */
+static bool drain(int fd, char *buf, size_t *len)
+{
+    char tmp[4096];
+    ssize_t k = read(fd, tmp, sizeof tmp);
+    if (k <= 0)
+        return k < 0 && errno == EINTR;
+    size_t room = CAPTURE - 1 - *len, take = (size_t)k < room ? (size_t)k : room;
+    memcpy(buf + *len, tmp, take);
+    *len += take;
+    buf[*len] = '\0';
+    return true;
+}
+
+/* Runs path with argv[1..] = args (NULL-terminated), stdin /dev/null,
+ * capturing stdout and stderr; kills it (by its pid) after TIMEOUT_S. */
+static void run_prog(const char *path, const char *const *args, run *r)
+{
+    memset(r, 0, sizeof *r);
+    r->status = -1;
+    const char *argv[16] = {path};
+    int argc = 1;
+    for (; args[argc - 1] && argc < 15; argc++)
+        argv[argc] = args[argc - 1];
+    argv[argc] = NULL;
+    int po[2], pe[2];
+    if (pipe(po) != 0)
+        return;
+    if (pipe(pe) != 0) {
+        close(po[0]);
+        close(po[1]);
+        return;
+    }
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_adddup2(&fa, po[1], 1);
+    posix_spawn_file_actions_adddup2(&fa, pe[1], 2);
+    posix_spawn_file_actions_addclose(&fa, po[0]);
+    posix_spawn_file_actions_addclose(&fa, pe[0]);
+    pid_t pid;
+    int rc = posix_spawn(&pid, path, &fa, NULL, (char *const *)argv, environ);
+    posix_spawn_file_actions_destroy(&fa);
+    close(po[1]);
+    close(pe[1]);
+    if (rc == 0) {
+        struct pollfd fds[2] = {{po[0], POLLIN, 0}, {pe[0], POLLIN, 0}};
+        bool open_out = true, open_err = true;
+        double deadline = now() + TIMEOUT_S;
+        while ((open_out || open_err) && now() < deadline) {
+            fds[0].fd = open_out ? po[0] : -1;
+            fds[1].fd = open_err ? pe[0] : -1;
+            if (poll(fds, 2, 100) <= 0)
+                continue;
+            if (open_out && (fds[0].revents & (POLLIN | POLLHUP)))
+                open_out = drain(po[0], r->out, &r->out_len);
+            if (open_err && (fds[1].revents & (POLLIN | POLLHUP)))
+                open_err = drain(pe[0], r->err, &r->err_len);
+        }
+        if (open_out || open_err)
+            kill(pid, SIGKILL);
+        int ws;
+        while (waitpid(pid, &ws, 0) < 0 && errno == EINTR) {
+        }
+        if (!open_out && !open_err && WIFEXITED(ws))
+            r->status = WEXITSTATUS(ws);
+    }
+    close(po[0]);
+    close(pe[0]);
+}
+
+/* Checks one bad-input run; returns NULL when it keeps the contract, else
+ * what is wrong (in buf). */
+static const char *judge_bad(const char *name, const run *r, char *buf, size_t size)
+{
+    size_t nl = 0, len = strlen(name);
+    for (size_t i = 0; i < r->err_len; i++)
+        nl += r->err[i] == '\n';
+    if (r->status != 2)
+        snprintf(buf, size, "exit status %d, not 2", r->status);
+    else if (r->out_len > 0)
+        snprintf(buf, size, "wrote %zu bytes to stdout", r->out_len);
+    else if (nl != 1 || r->err[r->err_len - 1] != '\n')
+        snprintf(buf, size, "stderr has %zu lines, not exactly one: '%.200s'", nl, r->err);
+    else if (strncmp(r->err, name, len) != 0 || (r->err[len] != ':' && r->err[len] != ' '))
+        snprintf(buf, size, "stderr does not start with '%s:': '%.200s'", name, r->err);
+    else
+        return NULL;
+    return buf;
+}
+
+enum { MAX_SUBS = 8, SUB_LEN = 32 };
+
+/* Adds the lowercase name at p (letters, digits, '_', '-'; at most
+ * SUB_LEN - 1 long) to subs unless present; returns the count. */
+static int add_sub(char subs[][SUB_LEN], int n, const char *p)
+{
+    size_t k = 0;
+    while (islower((unsigned char)p[k]) || isdigit((unsigned char)p[k]) || p[k] == '_' || p[k] == '-')
+        k++;
+    if (k == 0 || k >= SUB_LEN || !islower((unsigned char)p[0]) || n >= MAX_SUBS)
+        return n;
+    if (p[k] && !isspace((unsigned char)p[k]) && !strchr("|,})", p[k]))
+        return n;
+    for (int i = 0; i < n; i++)
+        if (strlen(subs[i]) == k && strncmp(subs[i], p, k) == 0)
+            return n;
+    memcpy(subs[n], p, k);
+    subs[n][k] = '\0';
+    return n + 1;
+}
+
+/* The subcommands a help text shows, into subs (returns how many):
+ * the lowercase word or a|b|c list after the program name on the "usage:"
+ * line and on indented continuation lines that repeat the program name
+ * ("usage: warp list" / "       warp sample NAME ..."), and the first words
+ * of the indented lines under a line "commands:" or "subcommands:". */
+static int subcommands(const char *help, const char *name, char subs[][SUB_LEN])
+{
+    int n = 0;
+    size_t len = strlen(name);
+    bool in_section = false;
+    for (const char *p = help; p && *p;) {
+        const char *eol = strchr(p, '\n'), *q = p;
+        size_t linelen = eol ? (size_t)(eol - p) : strlen(p);
+        bool indented = isspace((unsigned char)*p);
+        if (strncmp(q, "usage:", 6) == 0)
+            q += 6;
+        while (*q == ' ' || *q == '\t')
+            q++;
+        if ((q != p || strncmp(p, "usage:", 6) == 0) && strncmp(q, name, len) == 0 && q[len] == ' ') {
+            q += len;
+            while (*q == ' ')
+                q++;
+            if (*q == '{' || *q == '(')
+                q++;
+            /* a|b|c or a,b: every name of the list */
+            for (;;) {
+                n = add_sub(subs, n, q);
+                while (islower((unsigned char)*q) || isdigit((unsigned char)*q) || *q == '_' || *q == '-')
+                    q++;
+                if (*q != '|' && *q != ',')
+                    break;
+                q++;
+            }
+        } else if (in_section && indented) {
+            n = add_sub(subs, n, q);
+        }
+        if (!indented) {
+            size_t k = linelen;
+            while (k > 0 && isspace((unsigned char)p[k - 1]))
+                k--;
+            in_section = (k == 9 && strncasecmp(p, "commands:", 9) == 0) ||
+                         (k == 12 && strncasecmp(p, "subcommands:", 12) == 0);
+        }
+        p = eol ? eol + 1 : NULL;
+    }
+    return n;
+}
+
+/* Runs every bad-input case of the program (after `sub` when not NULL).
+ * Returns the number of violations, each printed unless quiet. */
+static int bad_input_cases(const char *path, const char *name, const char *sub, bool quiet)
+{
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    const char *help_args[] = {sub ? sub : "--help", sub ? "--help" : NULL, NULL};
+    run_prog(path, help_args, r);
+    bool samples = strstr(r->out, "--samples") != NULL, seed = strstr(r->out, "--seed") != NULL;
+    /* Each case: up to three words after the subcommand. */
+    const char *cases[10][3] = {{"--no-such-flag", NULL, NULL}, {"--samples", "-3", NULL},
+                                {"--samples", "abc", NULL},     {"--samples", "0", NULL},
+                                {"--samples", "1e30", NULL},    {"--seed", "x", NULL},
+                                {"--seed", NULL, NULL},         {"--samples", NULL, NULL}};
+    int n_cases = 8, bad = 0;
+    char why[512];
+    for (int c = 0; c < n_cases; c++) {
+        const char *flag = cases[c][0];
+        bool needs_samples = strcmp(flag, "--samples") == 0, needs_seed = strcmp(flag, "--seed") == 0;
+        /* The missing-value case is run with whichever of the two exists. */
+        if ((needs_samples && !samples) || (needs_seed && !seed))
+            continue;
+        if (c == 7 && seed)
+            continue;
+        const char *args[5] = {NULL};
+        int k = 0;
+        if (sub)
+            args[k++] = sub;
+        for (int j = 0; j < 3 && cases[c][j]; j++)
+            args[k++] = cases[c][j];
+        run_prog(path, args, r);
+        if (judge_bad(name, r, why, sizeof why)) {
+            if (!quiet)
+                printf("%s%s%s %s%s%s: %s\n", name, sub ? " " : "", sub ? sub : "", flag,
+                       cases[c][1] ? " " : "", cases[c][1] ? cases[c][1] : "", why);
+            bad++;
+        }
+    }
+    free(r);
+    return bad;
+}
+
+static void test_cli_program(void **state)
+{
+    const char *path = *state, *name = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    int bad = 0;
+    const char *help[] = {"--help", NULL}, *version[] = {"--version", NULL};
+    run_prog(path, version, r);
+    if (r->status != 0 || r->out_len == 0) {
+        printf("%s --version: exit status %d, %zu bytes of output\n", name, r->status, r->out_len);
+        bad++;
+    }
+    run_prog(path, help, r);
+    if (r->status != 0 || r->out_len == 0) {
+        printf("%s --help: exit status %d, %zu bytes of output\n", name, r->status, r->out_len);
+        bad++;
+    }
+    char subs[MAX_SUBS][SUB_LEN];
+    int n_subs = subcommands(r->out, name, subs);
+    free(r);
+    bad += bad_input_cases(path, name, NULL, false);
+    for (int i = 0; i < n_subs; i++) {
+        printf("%s: the cases run again after its subcommand '%s'\n", name, subs[i]);
+        bad += bad_input_cases(path, name, subs[i], false);
+    }
+    if (bad)
+        fail_msg("%s: %d violation(s) of the command-line contract (listed above)", name, bad);
+}
+
+/* --- negative controls ---------------------------------------------------- */
+
+static negctl tally;
+
+/* Writes an executable shell script dir/name with the given body. */
+static void write_script(const char *path, const char *body)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fprintf(f, "#!/bin/sh\n%s\n", body);
+    fclose(f);
+    assert_int_equal(chmod(path, 0755), 0);
+}
+
+/* Fake programs that answer --help like a real one but break the contract
+ * on bad input in one way each; the checks above must flag every one. */
+static void test_cli_negative_controls(void **state)
+{
+    (void)state;
+    static const char *const fakes[][2] = {
+        {"fake_status1", "echo \"fake_status1: bad\" >&2; exit 1"},
+        {"fake_stdout", "echo \"fake_stdout: bad\"; exit 2"},
+        {"fake_two_lines", "echo \"fake_two_lines: bad\" >&2; echo more >&2; exit 2"},
+        {"fake_no_name", "echo \"error: bad\" >&2; exit 2"},
+    };
+    char dir[] = "/tmp/mcbox-cli-XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    bool all = true;
+    for (size_t i = 0; i < sizeof fakes / sizeof fakes[0]; i++) {
+        char path[128], body[512];
+        snprintf(path, sizeof path, "%s/%s", dir, fakes[i][0]);
+        snprintf(body, sizeof body,
+                 "case \"$1\" in --help) echo 'usage: x [--samples N] [--seed S]'; exit 0;;"
+                 " --version) echo 1; exit 0;; esac\n%s",
+                 fakes[i][1]);
+        write_script(path, body);
+        all &= negctl_record(&tally, fakes[i][0], "bad-input contract",
+                             bad_input_cases(path, fakes[i][0], NULL, true) > 0);
+        unlink(path);
+    }
+    /* A program whose bad flags are refused on their own but accepted after
+     * its subcommand: only the subcommand pass can catch it. */
+    char path[128];
+    snprintf(path, sizeof path, "%s/fake_sub", dir);
+    write_script(path, "case \"$1\" in --help) echo 'usage: fake_sub run|check [options]';"
+                       " echo '  --samples N'; exit 0;; --version) echo 1; exit 0;;"
+                       " run) exit 0;; esac\necho \"fake_sub: bad\" >&2; exit 2");
+    char subs[MAX_SUBS][SUB_LEN];
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    const char *help[] = {"--help", NULL};
+    run_prog(path, help, r);
+    int n_subs = subcommands(r->out, "fake_sub", subs);
+    free(r);
+    assert_int_equal(bad_input_cases(path, "fake_sub", NULL, true), 0);
+    int flagged = 0;
+    for (int i = 0; i < n_subs; i++)
+        flagged += bad_input_cases(path, "fake_sub", subs[i], true) > 0;
+    /* Only "run" misbehaves; "check" (the second subcommand) is fine. */
+    all &= negctl_record(&tally, "fake_sub (bad only after its subcommand)", "subcommand pass",
+                         n_subs == 2 && flagged == 1);
+    unlink(path);
+    rmdir(dir);
+    assert_true(all);
+}
+
+static int report(void **state)
+{
+    (void)state;
+    return negctl_report(&tally);
+}
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+int main(void)
+{
+    static char *paths[MAX_PROGRAMS];
+    static struct CMUnitTest tests[MAX_PROGRAMS + 1];
+    static char names[MAX_PROGRAMS][96];
+    size_t n = 0;
+    char bin[1024];
+    snprintf(bin, sizeof bin, "%s/bin", mc_test_build_dir());
+    DIR *d = opendir(bin);
+    for (struct dirent *e; d && (e = readdir(d)) && n < MAX_PROGRAMS;) {
+        char path[2048];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", bin, e->d_name);
+        if (e->d_name[0] != '.' && stat(path, &st) == 0 && S_ISREG(st.st_mode) && access(path, X_OK) == 0)
+            paths[n++] = strdup(path);
+    }
+    if (d)
+        closedir(d);
+    qsort(paths, n, sizeof paths[0], by_name);
+    if (n == 0)
+        printf("no programs in %s: only the negative controls run\n", bin);
+    tests[0] = (struct CMUnitTest){"test_cli_negative_controls", test_cli_negative_controls, NULL, NULL,
+                                   NULL};
+    for (size_t i = 0; i < n; i++) {
+        snprintf(names[i], sizeof names[i], "test_cli_%s", strrchr(paths[i], '/') + 1);
+        tests[i + 1] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
+    }
+    int rc = _cmocka_run_group_tests("test_cli", tests, n + 1, NULL, report);
+    for (size_t i = 0; i < n; i++)
+        free(paths[i]);
+    return rc;
+}
