@@ -1,0 +1,57 @@
+/* examples/cos_cubed.c - chapter 2/5: the integral of cos^3 theta over the
+ * hemisphere, exactly pi / 2, by uniform directions (density 1 / (2 pi))
+ * and by cosine-weighted directions (density cos theta / pi).
+ *
+ * What it shows: importance sampling on the sphere of directions. The
+ * weights are 2 pi cos^3 theta (uniform) and pi cos^2 theta (cosine); the
+ * cosine density follows the integrand more closely, and the variance per
+ * sample (`variance` column) drops from 9 pi^2 / 28 = 3.17 to
+ * pi^2 / 12 = 0.82, almost four times fewer samples for the same error.
+ *
+ * Build and run:  make all && build/bin/cos_cubed
+ *                 build/bin/cos_cubed --method cosine --samples 1e7 --csv
+ */
+#include <string.h>
+
+#include "examples/common/cli.h"
+#include "mc/constants.h"
+#include "pdf/experiments.h"
+#include "samplers/hemisphere.h"
+
+static const char *const methods[] = {"uniform", "cosine", "all", NULL};
+static const char *const extra_cols[] = {"variance"};
+
+static double cos_cubed(vec3 d, void *ctx)
+{
+    (void)ctx;
+    return d.z > 0.0 ? d.z * d.z * d.z : 0.0;
+}
+
+int main(int argc, char **argv)
+{
+    uint64_t n = 1000000u, seed = 1u;
+    const char *method = "all";
+    bool csv = false;
+    const app_opt opts[] = {
+        {"--samples", APP_COUNT, &n, "directions per method (default 1e6)", NULL, 0, 0},
+        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        {"--method", APP_CHOICE, &method, "sampling density (default all)", methods, 0, 0},
+        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+    };
+    app_parse("cos_cubed",
+              "cos_cubed [--method uniform|cosine|all] [--samples N] [--seed S] [--csv]", argc,
+              argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+
+    const pdf_warp warps[2] = {{smp_uniform_hemisphere_sample, smp_uniform_hemisphere_pdf},
+                               {smp_cosine_hemisphere_sample, smp_cosine_hemisphere_pdf}};
+    app_table t = {stdout, csv, extra_cols, 1};
+    app_table_begin(&t);
+    for (int m = 0; m < 2; m++) {
+        if (strcmp(method, "all") != 0 && strcmp(method, methods[m]) != 0)
+            continue;
+        mc_rng rng = mc_rng_derive(seed, (uint64_t)m);
+        mc_estimate e = pdf_integrate_warp((pdf_fn){cos_cubed, NULL}, warps[m], &rng, n);
+        app_table_row(&t, methods[m], e, MC_PI_2, &e.variance);
+    }
+    return 0;
+}

@@ -1,0 +1,223 @@
+/* examples/warp.c - the command-line face of samplers/ and pdf/: list the
+ * warps, draw samples, evaluate densities, and test one against the other.
+ *
+ *   warp list                                      name domain measure params
+ *   warp sample NAME [--param k=v]... [--n N] [--seed S]   one point per line
+ *   warp pdf NAME [--param k=v]...     points on stdin -> one density per line
+ *   warp chi2 NAME [--param k=v]... [--n N] [--seed S] [--alpha A]
+ *                                                  prints: chi2 dof p verdict
+ *
+ * Points are written and read as in `sample`: directions `x y z`, planar
+ * points `x y`, reals `x`, discrete outcomes the index; numbers in %.17g.
+ * chi2 histograms N samples (default 1e6) in the entry's chart, integrates
+ * the density over every cell (mc/gof.h) and runs Pearson's test at level
+ * alpha (default 0.01); the verdict is `pass` or `fail`, and the exit
+ * status 0 or 1 accordingly. Any bad input: one line on stderr, exit 2.
+ *
+ * Build and run:  make all && build/bin/warp list
+ *                 build/bin/warp sample cosine --n 5 --seed 7
+ *                 build/bin/warp sample phong --param n=10 --n 3 | build/bin/warp pdf phong --param
+ * n=10 build/bin/warp chi2 mixture --param w=0.2
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "examples/common/cli.h"
+#include "examples/common/warp_table.h"
+#include "mc/gof.h"
+
+#define PROG "warp"
+#define MAX_PARAMS 16
+
+static const char USAGE[] =
+    "usage: warp list\n"
+    "       warp sample NAME [--param k=v]... [--n N] [--seed S]\n"
+    "       warp pdf NAME [--param k=v]...      (points on stdin)\n"
+    "       warp chi2 NAME [--param k=v]... [--n N] [--seed S] [--alpha A]\n"
+    "--samples is a synonym of --n. chi2 exits 0 on pass, 1 on fail; bad input exits 2.\n";
+
+typedef struct args {
+    const char *command, *name;
+    const char *params[MAX_PARAMS];
+    int n_params;
+    uint64_t n, seed;
+    bool have_n;
+    double alpha;
+} args;
+
+/* The value of option argv[*i] ("--opt v" or "--opt=v"). */
+static const char *option_value(int argc, char **argv, int *i, size_t len)
+{
+    if (argv[*i][len] == '=')
+        return argv[*i] + len + 1;
+    if (*i + 1 >= argc)
+        app_fail(PROG, "%s needs a value", argv[*i]);
+    return argv[++*i];
+}
+
+static bool is_option(const char *a, const char *name)
+{
+    size_t len = strlen(name);
+    return strncmp(a, name, len) == 0 && (a[len] == '\0' || a[len] == '=');
+}
+
+static args parse(int argc, char **argv)
+{
+    args a = {NULL, NULL, {NULL}, 0, 1000, 1, false, 0.01};
+    for (int i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
+            fputs(USAGE, stdout);
+            exit(0);
+        }
+        if (strcmp(s, "--version") == 0) {
+            printf("warp (mcbox) %s\n", APP_VERSION);
+            exit(0);
+        }
+        if (is_option(s, "--param")) {
+            if (a.n_params == MAX_PARAMS)
+                app_fail(PROG, "more than %d --param options", MAX_PARAMS);
+            a.params[a.n_params++] = option_value(argc, argv, &i, 7);
+        } else if (is_option(s, "--n") || is_option(s, "--samples")) {
+            const char *v = option_value(argc, argv, &i, s[3] == 'a' ? 9 : 3);
+            if (!app_parse_count(v, APP_MAX_SAMPLES, &a.n))
+                app_fail(PROG, "--n: '%s' is not a whole number from 1 to 1e13", v);
+            a.have_n = true;
+        } else if (is_option(s, "--seed")) {
+            const char *v = option_value(argc, argv, &i, 6);
+            if (!app_parse_seed(v, &a.seed))
+                app_fail(PROG, "--seed: '%s' is not an unsigned 64-bit integer", v);
+        } else if (is_option(s, "--alpha")) {
+            const char *v = option_value(argc, argv, &i, 7);
+            if (!app_parse_double(v, &a.alpha) || !(a.alpha > 0.0 && a.alpha < 1.0))
+                app_fail(PROG, "--alpha: '%s' is not a number in (0, 1)", v);
+        } else if (s[0] == '-' && s[1] != '\0') {
+            app_fail(PROG, "unknown option '%s' (see --help)", s);
+        } else if (!a.command) {
+            a.command = s;
+        } else if (!a.name) {
+            a.name = s;
+        } else {
+            app_fail(PROG, "unexpected argument '%s' (see --help)", s);
+        }
+    }
+    if (!a.command)
+        app_fail(PROG, "no command (list, sample, pdf or chi2; see --help)");
+    return a;
+}
+
+static void list(void)
+{
+    for (size_t i = 0; i < warp_count(); i++) {
+        const warp_entry *e = warp_at(i);
+        printf("%-17s %-24s %-12s %s\n", warp_name(e), warp_domain(e), warp_measure(e),
+               warp_param_defaults(e));
+    }
+}
+
+static void sample(const warp_entry *e, const warp_state *s, const args *a)
+{
+    mc_rng rng = mc_rng_derive(a->seed, 0u);
+    int dims = warp_point_dims(e);
+    for (uint64_t k = 0; k < a->n; k++) {
+        double x[3];
+        warp_sample(e, s, &rng, x);
+        if (warp_point_kind(e) == WARP_INDEX)
+            printf("%.0f\n", x[0]);
+        else
+            for (int j = 0; j < dims; j++)
+                printf("%.17g%c", x[j], j + 1 < dims ? ' ' : '\n');
+    }
+}
+
+/* Densities are collected first and printed only when every input line
+ * has parsed, so that bad input leaves stdout empty. */
+static void densities(const warp_entry *e, const warp_state *s)
+{
+    int dims = warp_point_dims(e);
+    size_t n = 0, cap = 1024;
+    double *out = malloc(cap * sizeof *out);
+    char line[4096];
+    for (long lineno = 1; out && fgets(line, sizeof line, stdin); lineno++) {
+        double x[3] = {0.0, 0.0, 0.0};
+        char *p = line, *end;
+        for (int j = 0; j < dims; j++, p = end) {
+            x[j] = strtod(p, &end);
+            if (end == p || !isfinite(x[j]))
+                app_fail(PROG, "stdin line %ld: expected %d number%s", lineno, dims,
+                         dims > 1 ? "s" : "");
+        }
+        while (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')
+            p++;
+        if (*p)
+            app_fail(PROG, "stdin line %ld: expected %d number%s", lineno, dims,
+                     dims > 1 ? "s" : "");
+        if (dims == 3) { /* directions are normalized; (0, 0, 0) is none */
+            double len = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+            if (!(len > 0.0))
+                app_fail(PROG, "stdin line %ld: the zero vector is not a direction", lineno);
+            x[0] /= len, x[1] /= len, x[2] /= len;
+        }
+        if (n == cap)
+            out = realloc(out, (cap *= 2) * sizeof *out);
+        if (out)
+            out[n++] = warp_density(e, s, x);
+    }
+    if (!out)
+        app_fail(PROG, "out of memory");
+    for (size_t i = 0; i < n; i++)
+        printf("%.17g\n", out[i]);
+    free(out);
+}
+
+static int chi2(const warp_entry *e, const warp_state *s, const args *a)
+{
+    warp_gof_ctx ctx = {e, s};
+    mc_gof_spec spec = warp_gof_spec(&ctx);
+    int cells = mc_gof_cell_count(&spec);
+    double *obs = malloc((size_t)cells * sizeof *obs),
+           *expct = malloc((size_t)cells * sizeof *expct);
+    if (!obs || !expct)
+        app_fail(PROG, "out of memory");
+    mc_rng rng = mc_rng_derive(a->seed, 0u);
+    mc_gof_result r = mc_gof_test(&spec, a->have_n ? a->n : 1000000u, &rng, a->alpha, obs, expct);
+    printf("%.6f %d %.6g %s\n", r.r.stat, r.r.dof, r.r.pvalue, r.reject ? "fail" : "pass");
+    free(obs);
+    free(expct);
+    return r.reject ? 1 : 0;
+}
+
+int main(int argc, char **argv)
+{
+    args a = parse(argc, argv);
+    if (strcmp(a.command, "list") == 0) {
+        if (a.name || a.n_params)
+            app_fail(PROG, "list takes no arguments");
+        list();
+        return 0;
+    }
+    if (strcmp(a.command, "sample") && strcmp(a.command, "pdf") && strcmp(a.command, "chi2"))
+        app_fail(PROG, "unknown command '%s' (list, sample, pdf or chi2)", a.command);
+    if (!a.name)
+        app_fail(PROG, "%s needs a sampler name (see warp list)", a.command);
+    const warp_entry *e = warp_find(a.name);
+    if (!e)
+        app_fail(PROG, "unknown sampler '%s' (see warp list)", a.name);
+    warp_params p;
+    warp_defaults(e, &p);
+    char err[256];
+    for (int i = 0; i < a.n_params; i++)
+        if (!warp_set_param(e, &p, a.params[i], err, sizeof err))
+            app_fail(PROG, "%s", err);
+    static warp_state s; /* large (the tables' storage) and self-referencing */
+    if (!warp_prepare(e, &p, &s, err, sizeof err))
+        app_fail(PROG, "%s", err);
+    if (strcmp(a.command, "sample") == 0)
+        sample(e, &s, &a);
+    else if (strcmp(a.command, "pdf") == 0)
+        densities(e, &s);
+    else
+        return chi2(e, &s, &a);
+    return 0;
+}

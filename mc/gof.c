@@ -1,0 +1,125 @@
+/* mc/gof.c - histogram, expected counts by per-cell quadrature, Pearson. */
+#include "mc/gof.h"
+
+#include <math.h>
+
+/* GSL's usual ample workspace: the densities of mcbox converge in far
+ * fewer subintervals. */
+#define QUAD_LIMIT 1000
+
+/* Cells with an expected count below this are pooled (the textbook rule). */
+#define MIN_EXPECTED 5.0
+
+int mc_gof_cell_count(const mc_gof_spec *spec)
+{
+    return spec->dims == 2 ? spec->cells[0] * spec->cells[1] : spec->cells[0];
+}
+
+/* The cell of coordinate x in [lo, hi] cut into n cells, or -1 when x lies
+ * outside by more than round-off (NaN fails both comparisons: outside). */
+static int cell_of(double x, double lo, double hi, int n)
+{
+    double w = hi - lo, tol = MC_GOF_EDGE_TOL * w;
+    if (!(x >= lo - tol && x <= hi + tol))
+        return -1;
+    int i = (int)floor((x - lo) / w * n);
+    return i < 0 ? 0 : (i >= n ? n - 1 : i);
+}
+
+double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double *obs)
+{
+    int nx = spec->cells[0], ny = spec->dims == 2 ? spec->cells[1] : 1;
+    double outside = 0.0;
+    for (uint64_t k = 0; k < n; k++) {
+        double x[2] = {0.0, 0.0};
+        spec->sample(rng, spec->ctx, x);
+        int i = cell_of(x[0], spec->lo[0], spec->hi[0], nx);
+        int j = spec->dims == 2 ? cell_of(x[1], spec->lo[1], spec->hi[1], ny) : 0;
+        if (i < 0 || j < 0)
+            outside += 1.0;
+        else
+            obs[i * ny + j] += 1.0;
+    }
+    return outside;
+}
+
+/* The density as the integrands mc_quad takes. */
+static double density_1d(double x, void *params)
+{
+    const mc_gof_spec *s = params;
+    double p[2] = {x, 0.0};
+    return s->pdf(p, s->ctx);
+}
+
+static double density_2d(double x, double y, void *params)
+{
+    const mc_gof_spec *s = params;
+    double p[2] = {x, y};
+    return s->pdf(p, s->ctx);
+}
+
+static double integrate_box(const mc_gof_spec *s, mc_quad *q, double x0, double x1, double y0,
+                            double y1)
+{
+    double v = 0.0;
+    /* A non-zero status means GSL could not certify its 1e-11 target (a
+     * jump of the density inside the cell, typically); the best value it
+     * returns is still far more accurate than a histogram can resolve. */
+    if (s->dims == 1)
+        (void)mc_quad_1d(q, (mc_fn1){density_1d, (void *)s}, x0, x1, &v, NULL);
+    else
+        (void)mc_quad_2d(q, (mc_fn2){density_2d, (void *)s}, x0, x1, y0, y1, &v, NULL);
+    return v;
+}
+
+double mc_gof_integrate(const mc_gof_spec *spec, mc_quad *q)
+{
+    return integrate_box(spec, q, spec->lo[0], spec->hi[0], spec->lo[1], spec->hi[1]);
+}
+
+int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct)
+{
+    int nx = spec->cells[0], ny = spec->dims == 2 ? spec->cells[1] : 1;
+    double wx = (spec->hi[0] - spec->lo[0]) / nx;
+    double wy = spec->dims == 2 ? (spec->hi[1] - spec->lo[1]) / ny : 0.0;
+    int failed = 0;
+#pragma omp parallel reduction(| : failed)
+    {
+        mc_quad *q = mc_quad_create(QUAD_LIMIT);
+        failed |= q == NULL;
+#pragma omp for schedule(dynamic, 16)
+        for (int c = 0; c < nx * ny; c++) {
+            int i = c / ny, j = c % ny;
+            /* Edges from the index, not accumulated, so the last is hi. */
+            double x0 = spec->lo[0] + i * wx, x1 = i == nx - 1 ? spec->hi[0] : x0 + wx;
+            double y0 = 0.0, y1 = 0.0;
+            if (spec->dims == 2) {
+                y0 = spec->lo[1] + j * wy;
+                y1 = j == ny - 1 ? spec->hi[1] : y0 + wy;
+            }
+            double prob = q ? integrate_box(spec, q, x0, x1, y0, y1) : (double)NAN;
+            expct[c] = prob < MC_GOF_ZERO_CELL_PROB ? 0.0 : prob * (double)n;
+        }
+        mc_quad_destroy(q);
+    }
+    return failed ? -1 : 0;
+}
+
+mc_gof_result mc_gof_test(const mc_gof_spec *spec, uint64_t n, mc_rng *rng, double alpha,
+                          double *obs, double *expct)
+{
+    mc_gof_result res = {{0.0, 0, (double)NAN, 0u, 0.0, 0.0, 0.0}, 0.0, true};
+    int cells = mc_gof_cell_count(spec);
+    for (int c = 0; c < cells; c++)
+        obs[c] = 0.0;
+    res.outside = mc_gof_histogram(spec, rng, n, obs);
+    if (mc_gof_expected(spec, n, expct) != 0)
+        return res;
+    bool finite = true;
+    for (int c = 0; c < cells; c++)
+        finite = finite && isfinite(expct[c]);
+    res.r = mc_chi2_pearson(obs, expct, (size_t)cells, MIN_EXPECTED);
+    res.reject = !finite || !(res.r.pvalue >= alpha) || res.outside > 0.0 ||
+                 res.r.obs_in_zero_cells > MC_GOF_ZERO_CELL_FRAC * (double)n;
+    return res;
+}

@@ -1,0 +1,97 @@
+/* mc/gof.h - goodness of fit of a sampler to its claimed density: the
+ * histogram, the per-cell quadrature and the Pearson test in one call.
+ *
+ * mc/chi2.h has the statistic; this module adds the two steps in front of
+ * it that every user repeats: count samples in the cells of a rectangle of
+ * some parameterization, and integrate the claimed density over each cell
+ * (adaptive quadrature, never the value at the cell centre) to get the
+ * expected counts. Programs that check samplers (the `warp` tool) link it;
+ * the test suite's harness (tests/support/chi2_harness) follows the same
+ * rules. Serves chapter 5 ("Generating Random Directions") and every
+ * sampler and pdf object after it.
+ *
+ * Parameterizations: (cos theta, phi) for directions, where a density per
+ * unit solid angle is already a density of the rectangle, because
+ * d omega = d(cos theta) d phi; (r^2, phi) for discs (density per unit
+ * area / 2); (x, y) for planar shapes; x for 1D; index + 1/2 in [0, k] for
+ * a discrete distribution of k outcomes (the density is then the
+ * probability, constant over each unit cell).
+ *
+ * Allocation: the caller owns the count arrays; the only allocation is the
+ * quadrature workspaces (mc_quad_create) of mc_gof_expected.
+ */
+#ifndef MC_GOF_H
+#define MC_GOF_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "mc/chi2.h"
+#include "mc/quad.h"
+#include "mc/rng.h"
+
+/* One experiment over a 1D interval or a 2D rectangle. */
+typedef struct mc_gof_spec {
+    int dims;            /* 1 or 2 */
+    double lo[2], hi[2]; /* the rectangle (lo[1], hi[1] ignored when dims == 1) */
+    int cells[2];        /* cells per dimension, >= 1 (cells[1] ignored when dims == 1) */
+    /* Draws one sample, mapped into the parameterization, into out. */
+    void (*sample)(mc_rng *rng, void *ctx, double out[2]);
+    /* The claimed density with respect to the Lebesgue measure of the
+     * parameterization, 0 outside its support. Called from several threads
+     * at once: must not write ctx. */
+    double (*pdf)(const double x[2], void *ctx);
+    void *ctx;
+} mc_gof_spec;
+
+/* Number of cells: cells[0] (1D) or cells[0] * cells[1] (2D). Cell (i, j)
+ * has index i * cells[1] + j. */
+int mc_gof_cell_count(const mc_gof_spec *spec);
+
+/* A sample at most MC_GOF_EDGE_TOL of the rectangle's width outside it is
+ * put in the edge cell: a cos theta of 1 + 1 ulp is round-off, not a bug. */
+#define MC_GOF_EDGE_TOL 1e-12
+/* A cell whose probability integrates below this counts as expected-zero:
+ * the quadrature's absolute tolerance (MC_QUAD_EPSABS) is 1e-12. */
+#define MC_GOF_ZERO_CELL_PROB 1e-13
+/* The fraction of the samples that may land in expected-zero cells before
+ * the test rejects: samples exactly on a support boundary that coincides
+ * with a cell edge; any real leak of mass is far larger. */
+#define MC_GOF_ZERO_CELL_FRAC 1e-6
+
+/* Adds n samples drawn from rng to obs[0 .. mc_gof_cell_count) (the caller
+ * zeroes it first) and returns how many fell outside the rectangle (NaN
+ * coordinates count as outside). */
+double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double *obs);
+
+/* Writes n times the density's integral over every cell to
+ * expct[0 .. mc_gof_cell_count), 0 for cells below MC_GOF_ZERO_CELL_PROB.
+ * Cells are shared among OpenMP threads, each with its own workspace.
+ * Returns 0, or -1 when a workspace could not be allocated (the contents
+ * of expct are then unspecified). */
+int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct);
+
+/* The density's integral over the whole rectangle (q from mc_quad_create);
+ * 1 to the quadrature's accuracy for a normalized density whose support
+ * lies inside the rectangle. */
+double mc_gof_integrate(const mc_gof_spec *spec, mc_quad *q);
+
+/* Outcome of mc_gof_test. */
+typedef struct mc_gof_result {
+    mc_chi2_result r; /* Pearson statistic, dof, p-value, pooling */
+    double outside;   /* samples outside the rectangle */
+    bool reject;      /* p < alpha, or any sample outside, or more than
+                         MC_GOF_ZERO_CELL_FRAC n in expected-zero cells,
+                         or a non-finite expected count */
+} mc_gof_result;
+
+/* Histograms n >= 1 samples drawn from rng, integrates the density over
+ * every cell, pools cells with expected count < 5 and runs Pearson's test
+ * at level alpha (0 < alpha < 1). obs and expct are caller-owned arrays of
+ * mc_gof_cell_count(spec) doubles; they hold the tables afterwards (for
+ * plots). If the workspaces cannot be allocated the result rejects with
+ * p-value NaN. */
+mc_gof_result mc_gof_test(const mc_gof_spec *spec, uint64_t n, mc_rng *rng, double alpha,
+                          double *obs, double *expct);
+
+#endif /* MC_GOF_H */

@@ -1,0 +1,143 @@
+/* pdf/pdf.h - the book's pdf objects: densities of directions that can be
+ * evaluated (value) and sampled (generate).
+ *
+ * Chapter 8 ("Mixture Densities") and chapter 10 ("Cleaning Up pdf
+ * Management") of "Ray Tracing: The Rest of Your Life" give every density
+ * the renderer samples from the same two-function interface. Chapter 7
+ * ("Sampling Lights Directly") supplies the density toward a parallelogram
+ * light, and chapter 10 also the density toward a sphere (a cone of
+ * directions) and the list of lights.
+ *
+ * C has no class hierarchy, so a pdf is a tagged union passed by pointer.
+ * Nothing here allocates: constructors return by value, and a mixture or a
+ * list only points at a caller-owned array of component pointers (and
+ * weights), which is typically on the caller's stack for one bounce. The
+ * caller keeps those arrays and the pdfs they point to alive while the
+ * composite is used.
+ *
+ * Every density is per unit solid angle on the unit sphere of directions.
+ * Every direction passed to pdf_value must be unit length (within rounding;
+ * the parallelogram and sphere densities rely on it for distances), and
+ * every direction pdf_generate returns is unit length. Densities are 0 where
+ * the pdf cannot generate, never NaN.
+ */
+#ifndef PDF_PDF_H
+#define PDF_PDF_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "mc/onb.h"
+#include "mc/rng.h"
+#include "mc/vec3.h"
+
+typedef enum pdf_kind {
+    PDF_UNIFORM_SPHERE, /* 1 / (4 pi) everywhere */
+    PDF_COSINE,         /* cos(theta) / pi about a normal, 0 below it */
+    PDF_TOWARD_QUAD,    /* uniform points of a parallelogram seen from a point */
+    PDF_TOWARD_SPHERE,  /* uniform directions in the cone that holds a sphere */
+    PDF_MIXTURE,        /* sum of weights[i] * components[i] */
+    PDF_LIST            /* mixture with equal weights 1 / n */
+} pdf_kind;
+
+typedef struct pdf pdf;
+
+/* Build pdfs with the constructors below, never by hand: they precompute
+ * the fields (frames, normals, the cone's cosine). Reading a field, as the
+ * tests and the chart tools do, is fine. */
+struct pdf {
+    pdf_kind kind;
+    union {
+        struct {
+            onb frame; /* frame.n is the normal */
+        } cosine;
+        struct {
+            vec3 origin, corner, u, v;
+            vec3 normal;     /* unit (u x v) / |u x v| */
+            vec3 w;          /* (u x v) / |u x v|^2: gives the edge coordinates */
+            double inv_area; /* 1 / |u x v| */
+        } quad;
+        struct {
+            vec3 origin, center;
+            double radius;
+            onb frame;            /* frame.n points from origin to center */
+            double cos_theta_max; /* -1 when origin is inside or on the sphere */
+        } sphere;
+        struct {
+            const pdf *const *components;
+            const double *weights;
+            size_t n;
+        } mixture;
+        struct {
+            const pdf *const *items;
+            size_t n;
+        } list;
+    } as;
+};
+
+/* Uniform directions over the whole sphere: value 1 / (4 pi). */
+pdf pdf_uniform_sphere(void);
+
+/* Cosine-weighted directions about `normal` (unit length): value
+ * max(0, cos theta) / pi, theta measured from normal. Generated with the
+ * book's mapping (samplers/hemisphere.h) carried to normal by an ONB. */
+pdf pdf_cosine(vec3 normal);
+
+/* Directions from `origin` toward uniformly distributed points of the
+ * parallelogram corner + s u + t v, s, t in [0, 1] (u, v not parallel).
+ * value(d) is the area density 1 / A converted to solid angle,
+ * dist^2 / (|cos| A), at the point where the ray origin + r d (r > 0) meets
+ * the parallelogram, and 0 when it misses. The light is two-sided (|cos|).
+ * `origin` must not lie in the parallelogram's plane (every direction to
+ * the light would be grazing: no density exists, and value returns 0). */
+pdf pdf_toward_quad(vec3 origin, vec3 corner, vec3 u, vec3 v);
+
+/* Directions from `origin` uniformly distributed in the cone that holds
+ * the sphere (center, radius > 0): cos theta_max = sqrt(1 - R^2 / d^2)
+ * about the direction to center, value 1 / (2 pi (1 - cos theta_max))
+ * inside the cone and 0 outside. Every such direction hits the sphere.
+ * From inside or on the sphere (d <= R) every direction hits it and the
+ * pdf is uniform over the whole sphere, 1 / (4 pi) (the book's code
+ * computes sqrt of a negative number there and returns NaN). */
+pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius);
+
+/* The mixture sum_i weights[i] * components[i] of n >= 1 pdfs. Weights
+ * must be finite, >= 0 and sum to 1 (check with pdf_mixture_weights_valid
+ * or pdf_valid): otherwise value() no longer integrates to 1 and every
+ * estimate divided by it is biased by the same factor. generate() picks
+ * component i with probability weights[i] and samples it; value() sums
+ * over ALL components, because any component may have produced a given
+ * direction (chapter 8's "very important detail"). The arrays are
+ * borrowed, not copied. */
+pdf pdf_mixture(const pdf *const *components, const double *weights, size_t n);
+
+/* The equal-weight mixture of 1 <= n <= UINT32_MAX pdfs (one per light):
+ * generate() picks an item uniformly, value() is the average of the
+ * items' values. The array is borrowed, not copied. */
+pdf pdf_list(const pdf *const *items, size_t n);
+
+/* The density of direction d (unit length) per unit solid angle, >= 0 and
+ * finite. */
+double pdf_value(const pdf *p, vec3 d);
+
+/* A unit direction distributed according to p, drawing uniforms from rng. */
+vec3 pdf_generate(const pdf *p, mc_rng *rng);
+
+/* Tolerance on |sum of weights - 1| accepted by the checks below. A
+ * weight sum off by 1e-9 biases an estimate by at most 1e-9 relative, far
+ * below any Monte Carlo error bar, while still admitting sums such as ten
+ * times 0.1 that rounding leaves at 1 - 1.1e-16. */
+#define PDF_WEIGHT_SUM_TOL 1e-9
+
+/* True when n >= 1 and the weights are finite, >= 0 and sum to 1 within
+ * PDF_WEIGHT_SUM_TOL. */
+bool pdf_mixture_weights_valid(const double *weights, size_t n);
+
+/* True when p is well formed: a unit normal (1e-9), a parallelogram of
+ * nonzero area whose plane does not hold the origin, a finite positive
+ * radius, non-NULL components with valid weights, recursively (nesting
+ * deeper than 16 levels, which a cycle would produce, is invalid). For
+ * debug assertions in callers; pdf_value and pdf_generate do not check. */
+bool pdf_valid(const pdf *p);
+
+#endif /* PDF_PDF_H */

@@ -1,0 +1,131 @@
+/* tests/test_gof.c - mc/gof.h, the histogram + per-cell quadrature +
+ * Pearson test behind `warp chi2`: correct samplers pass, wrong ones and
+ * leaks are rejected, the normalization integral is exact. */
+#include "tests/support/mc_test.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "mc/constants.h"
+#include "mc/gof.h"
+#include "tests/support/negctl.h"
+
+/* Every statistical check here: 10^5 samples, rejected at alpha = 1e-4
+ * (the false-alarm rate per correct test). */
+#define ALPHA 1e-4
+enum { N = 100000, MAX_CELLS = 2500 };
+
+/* x = sqrt(u) has density 2x on [0, 1]; x = u (the control) has density 1. */
+static void sample_sqrt(mc_rng *rng, void *ctx, double out[2])
+{
+    (void)ctx;
+    out[0] = sqrt(mc_rng_uniform(rng));
+}
+static void sample_plain(mc_rng *rng, void *ctx, double out[2])
+{
+    (void)ctx;
+    out[0] = mc_rng_uniform(rng);
+}
+/* Leaks: 1% of the samples land in (1, 1.2]. */
+static void sample_leaky(mc_rng *rng, void *ctx, double out[2])
+{
+    (void)ctx;
+    double u = mc_rng_uniform(rng);
+    out[0] = u < 0.99 ? sqrt(u / 0.99) : 1.0 + 0.2 * mc_rng_uniform(rng);
+}
+static double pdf_2x(const double x[2], void *ctx)
+{
+    (void)ctx;
+    return x[0] >= 0.0 && x[0] <= 1.0 ? 2.0 * x[0] : 0.0;
+}
+/* Claims 0 on [0, 1/2), 2 on [1/2, 1]: samples of the uniform sampler
+ * fall where it says none can. */
+static double pdf_upper_half(const double x[2], void *ctx)
+{
+    (void)ctx;
+    return x[0] >= 0.5 && x[0] <= 1.0 ? 2.0 : 0.0;
+}
+
+/* The unit disc in (r^2, phi): uniform points have density 1 / (2 pi). */
+static void sample_disc(mc_rng *rng, void *ctx, double out[2])
+{
+    bool no_sqrt = ctx != NULL;
+    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    double r = no_sqrt ? u2 : sqrt(u2);
+    out[0] = r * r, out[1] = MC_2PI * u1;
+}
+static double pdf_disc(const double x[2], void *ctx)
+{
+    (void)ctx, (void)x;
+    return 1.0 / MC_2PI;
+}
+
+static mc_gof_result run(mc_gof_spec spec, uint64_t seed)
+{
+    static double obs[MAX_CELLS], expct[MAX_CELLS];
+    assert_true(mc_gof_cell_count(&spec) <= MAX_CELLS);
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    return mc_gof_test(&spec, N, &rng, ALPHA, obs, expct);
+}
+
+static void test_gof_correct_samplers_pass(void **state)
+{
+    (void)state;
+    uint64_t seed = mc_test_seed(8101u);
+    mc_gof_spec one = {1, {0.0, 0.0}, {1.0, 0.0}, {50, 1}, sample_sqrt, pdf_2x, NULL};
+    mc_gof_result r = run(one, seed);
+    assert_false(r.reject);
+    assert_int_equal(r.r.dof, 49);
+    assert_true(r.outside == 0.0);
+    mc_gof_spec disc = {2, {0.0, 0.0}, {1.0, MC_2PI}, {40, 60}, sample_disc, pdf_disc, NULL};
+    assert_int_equal(mc_gof_cell_count(&disc), 2400);
+    assert_false(run(disc, mc_test_seed(8102u)).reject);
+}
+
+static void test_gof_integrate(void **state)
+{
+    (void)state;
+    mc_quad *q = mc_quad_create(1000);
+    assert_non_null(q);
+    mc_gof_spec one = {1, {0.0, 0.0}, {1.0, 0.0}, {50, 1}, sample_sqrt, pdf_2x, NULL};
+    assert_near(mc_gof_integrate(&one, q), 1.0, 1e-12);
+    mc_gof_spec disc = {2, {0.0, 0.0}, {1.0, MC_2PI}, {40, 60}, sample_disc, pdf_disc, NULL};
+    assert_near(mc_gof_integrate(&disc, q), 1.0, 1e-12);
+    mc_quad_destroy(q);
+}
+
+/* Each wrong experiment is rejected, and for the reason meant. */
+static void test_gof_negative_controls(void **state)
+{
+    negctl *t = *state;
+    uint64_t seed = mc_test_seed(8103u);
+    mc_gof_spec wrong_pdf = {1, {0.0, 0.0}, {1.0, 0.0}, {50, 1}, sample_plain, pdf_2x, NULL};
+    mc_gof_result r = run(wrong_pdf, seed);
+    bool ok = negctl_record(t, "uniform samples claimed as 2x", "Pearson p-value",
+                            r.reject && r.r.pvalue < ALPHA);
+    mc_gof_spec no_sqrt = {2,           {0.0, 0.0}, {1.0, MC_2PI}, {40, 60},
+                           sample_disc, pdf_disc,   (void *)1};
+    r = run(no_sqrt, seed);
+    ok &= negctl_record(t, "disc radius without the sqrt", "Pearson p-value",
+                        r.reject && r.r.pvalue < ALPHA);
+    mc_gof_spec leaky = {1, {0.0, 0.0}, {1.0, 0.0}, {50, 1}, sample_leaky, pdf_2x, NULL};
+    r = run(leaky, seed);
+    ok &= negctl_record(t, "1% of samples outside the rectangle", "outside count",
+                        r.reject && r.outside > 0.0);
+    mc_gof_spec zero = {1, {0.0, 0.0}, {1.0, 0.0}, {50, 1}, sample_plain, pdf_upper_half, NULL};
+    r = run(zero, seed);
+    ok &= negctl_record(t, "samples where the pdf is 0", "zero-expected cells",
+                        r.reject && r.r.obs_in_zero_cells > MC_GOF_ZERO_CELL_FRAC * N);
+    assert_true(ok);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_gof_correct_samplers_pass),
+        cmocka_unit_test(test_gof_integrate),
+        cmocka_unit_test(test_gof_negative_controls),
+    };
+    return cmocka_run_group_tests_name("test_gof", tests, negctl_group_setup,
+                                       negctl_group_teardown);
+}
