@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# plots/check.sh OUT STEM... - checks what `make plots` made in OUT.
+#
+# Every figure exists as a non-empty PNG (the PNG signature) and SVG (a
+# closing </svg>); every data file in OUT/data has exactly the header it
+# should, the same number of fields on every row, at least one row, and no
+# NaN or infinity anywhere; and the fitted slopes say what the theory says:
+# plain pi within 0.05 of -1/2, stratified pi steeper than -0.7, and the
+# chi-square p-values of the correct sampler uniform (Kolmogorov-Smirnov),
+# those of the wrong one all below 1e-3. Exit status 1 on any failure.
+set -uo pipefail
+
+out=$1
+shift
+data=$out/data
+fails=0
+fail() {
+    echo "plots-check: FAIL: $*"
+    fails=$((fails + 1))
+}
+
+rms_cols=program,method,n,seeds,rms_error,rel_rms_error,mean_stderr,mean_variance,exact
+slope_cols=program,method,slope,intercept,points,n_min,n_max
+# The header each data file must have.
+header_of() {
+    case $1 in
+    pi_convergence.csv | integrate_x_sq_convergence.csv | cos_cubed_variance.csv | \
+        convergence_rates.csv) echo "$rms_cols" ;;
+    rates_*.csv) echo "$rms_cols" ;;
+    *_slopes.csv) echo "$slope_cols" ;;
+    sphere_scatter.csv) echo method,x,y,z ;;
+    hemisphere_mappings.csv) echo mapping,x,y,z ;;
+    cos_theta_histograms.csv) echo sampler,param,bin_lo,bin_hi,count,density,expected_density ;;
+    chi2_cells.csv) echo i,j,cos_lo,cos_hi,phi_lo,phi_hi,observed,expected,diff_sd ;;
+    chi2_pvalues.csv) echo case,seed,n,chi2,dof,p ;;
+    efficiency.csv) echo problem,method,n,variance,exact,cpu_seconds,seconds_per_sample,seconds_to_1pct ;;
+    *) echo "" ;;
+    esac
+}
+expected_data="$(printf '%s.csv\n' "$@") pi_convergence_slopes.csv integrate_x_sq_convergence_slopes.csv
+cos_cubed_variance_slopes.csv convergence_rates_slopes.csv"
+
+figures=0
+for s in "$@"; do
+    png=$out/$s.png svg=$out/$s.svg
+    if [ ! -s "$png" ] || [ "$(head -c 8 "$png" | od -An -tx1 | tr -d ' \n')" != 89504e470d0a1a0a ]; then
+        fail "$png missing, empty or not a PNG"
+    else
+        figures=$((figures + 1))
+    fi
+    if [ ! -s "$svg" ] || ! grep -q '</svg>' "$svg"; then
+        fail "$svg missing, empty or not an SVG"
+    else
+        figures=$((figures + 1))
+    fi
+done
+
+files=0
+for f in $expected_data; do
+    [ -f "$data/$f" ] || fail "$data/$f missing"
+done
+for path in "$data"/*.csv; do
+    [ -f "$path" ] || continue
+    f=$(basename "$path")
+    want=$(header_of "$f")
+    if [ -z "$want" ]; then
+        fail "$path: a data file no figure declares"
+        continue
+    fi
+    msg=$(awk -F, -v want="$want" '
+        NR == 1 { if ($0 != want) { print "header is \"" $0 "\", expected \"" want "\""; exit 1 }
+                  nf = NF; next }
+        NF != nf { print "line " NR " has " NF " fields, expected " nf; exit 1 }
+        { for (c = 1; c <= NF; c++) {
+              v = tolower($c)
+              if (v ~ /^[-+]?(nan|inf|infinity)$/ || v ~ /^-?nan\(/) {
+                  print "line " NR " column " c " is " $c; exit 1 } } }
+        END { if (NR < 2) { print "no data rows"; exit 1 } }' "$path")
+    if [ -n "$msg" ]; then fail "$path: $msg"; else files=$((files + 1)); fi
+done
+
+# slope PROGRAM METHOD: the fitted slope from a *_slopes.csv file, or "".
+slope() {
+    awk -F, -v p="$2" -v m="$3" '$1 == p && $2 == m { print $3 }' "$data/$1"
+}
+check_slope() { # file program method awk-condition description
+    local s
+    s=$(slope "$1" "$2" "$3")
+    if [ -z "$s" ]; then
+        fail "$1: no fitted slope for $2 $3"
+    elif awk -v s="$s" "BEGIN { exit !($4) }"; then
+        echo "plots-check: $2 $3 slope $s ($5): ok"
+    else
+        fail "$2 $3 slope $s, expected $5"
+    fi
+}
+if [ -f "$data/pi_convergence_slopes.csv" ]; then
+    check_slope pi_convergence_slopes.csv pi plain 's > -0.55 && s < -0.45' "-1/2 within 0.05"
+    check_slope pi_convergence_slopes.csv pi stratified 's < -0.7' "steeper than -0.7"
+fi
+
+if [ -f "$data/chi2_pvalues.csv" ]; then
+    # Kolmogorov-Smirnov distance of the correct p-values from U(0,1);
+    # sqrt(n) D > 1.95 has probability 0.001 under uniformity.
+    ks=$(awk -F, '$1 == "correct" { print $6 }' "$data/chi2_pvalues.csv" | sort -g |
+        awk '{ p[NR] = $1 } END { d = 0; for (i = 1; i <= NR; i++) {
+                a = i / NR - p[i]; b = p[i] - (i - 1) / NR
+                if (a > d) d = a; if (b > d) d = b }
+              printf "%.3f", d * sqrt(NR) }')
+    if awk -v k="$ks" 'BEGIN { exit !(k < 1.95) }'; then
+        echo "plots-check: correct sampler p-values uniform, sqrt(n) D = $ks < 1.95: ok"
+    else
+        fail "correct sampler p-values not uniform: sqrt(n) D = $ks"
+    fi
+    big=$(awk -F, '$1 == "wrong" && $6 >= 1e-3' "$data/chi2_pvalues.csv" | wc -l)
+    if [ "$big" -eq 0 ]; then
+        echo "plots-check: wrong sampler rejected at every seed (p < 1e-3): ok"
+    else
+        fail "wrong sampler has $big p-values >= 1e-3"
+    fi
+fi
+
+if [ "$fails" -eq 0 ]; then
+    echo "plots-check: $figures figures and $files data files in $out: all ok"
+else
+    echo "plots-check: $fails failures in $out"
+    exit 1
+fi
