@@ -10,13 +10,11 @@
  *
  * Build and run: make bench   (or: make all && build/bench/bench_mc)
  */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime */
-
 #include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 
+#include "examples/common/timing.h"
 #include "mc/pi.h"
 #include "mc/rng.h"
 
@@ -24,23 +22,16 @@
  * measured once on the machine the project targets. */
 #define BOOK_RATE 26e6
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 /* Keeps the optimizer from dropping work whose result is otherwise unused. */
 static volatile double sink;
 
 static double rate_uniform(uint64_t n)
 {
     mc_rng rng = mc_rng_derive(1u, 0u);
-    double t0 = now(), acc = 0.0;
+    double t0 = app_wall_seconds(), acc = 0.0;
     for (uint64_t i = 0; i < n; i++)
         acc += mc_rng_uniform(&rng);
-    double dt = now() - t0;
+    double dt = app_wall_seconds() - t0;
     sink = acc;
     return (double)n / dt;
 }
@@ -48,9 +39,9 @@ static double rate_uniform(uint64_t n)
 static double rate_scalar_pi(uint64_t n)
 {
     mc_rng rng = mc_rng_derive(1u, 0u);
-    double t0 = now();
+    double t0 = app_wall_seconds();
     uint64_t hits = mc_pi_hits_scalar(&rng, n);
-    double dt = now() - t0;
+    double dt = app_wall_seconds() - t0;
     sink = (double)hits;
     return (double)n / dt;
 }
@@ -63,9 +54,9 @@ static double rate_pi(pi_fn f, uint64_t n, int threads, mc_estimate *e)
 {
     double best = 0.0;
     for (int k = 0; k < 3; k++) {
-        double t0 = now();
+        double t0 = app_wall_seconds();
         *e = f(2385u, n, threads, NULL);
-        double r = (double)n / (now() - t0);
+        double r = (double)n / (app_wall_seconds() - t0);
         if (r > best)
             best = r;
     }

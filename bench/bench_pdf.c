@@ -11,55 +11,40 @@
  * Build and run: make bench   (or: make all && build/bench/bench_pdf
  *                [--samples N] [--seed S])
  */
-/* clock_gettime and its clocks are POSIX, not ISO C17. */
-#define _POSIX_C_SOURCE 200809L
-
 #include <stdio.h>
-#include <stdlib.h>
-#include <time.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/timing.h"
 #include "pdf/pdf.h"
-
-/* CPU time of this thread: other jobs on the machine do not count. */
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* Keeps the optimizer from dropping work whose result is otherwise unused. */
-static volatile double sink;
 
 enum { REPS = 5, POOL = 4096 };
 
-static int cmp_double(const void *a, const void *b)
+/* n directions from the pdf (ctx); returns their coordinate sum. */
+static double generate_loop(void *ctx, uint64_t n, mc_rng *rng)
 {
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *t)
-{
-    qsort(t, REPS, sizeof t[0], cmp_double);
-    return t[REPS / 2];
-}
-
-static double ns_generate(const pdf *p, uint64_t n, uint64_t seed)
-{
-    double t[REPS];
-    for (int k = 0; k < REPS; k++) {
-        mc_rng rng = mc_rng_derive(seed, (uint64_t)k);
-        double acc = 0.0, t0 = now();
-        for (uint64_t i = 0; i < n; i++) {
-            vec3 d = pdf_generate(p, &rng);
-            acc += d.x + d.y + d.z;
-        }
-        t[k] = (now() - t0) * 1e9 / (double)n;
-        sink = acc;
+    const pdf *p = ctx;
+    double acc = 0.0;
+    for (uint64_t i = 0; i < n; i++) {
+        vec3 d = pdf_generate(p, rng);
+        acc += d.x + d.y + d.z;
     }
-    return median(t);
+    return acc;
+}
+
+typedef struct value_job {
+    const pdf *p;
+    const vec3 *pool; /* POOL directions the pdf generated */
+} value_job;
+
+/* n values of the pdf, cycling over the pool; returns their sum. */
+static double value_loop(void *ctx, uint64_t n, mc_rng *rng)
+{
+    const value_job *j = ctx;
+    (void)rng;
+    double acc = 0.0;
+    for (uint64_t i = 0; i < n; i++)
+        acc += pdf_value(j->p, j->pool[i & (POOL - 1)]);
+    return acc;
 }
 
 static double ns_value(const pdf *p, uint64_t n, uint64_t seed)
@@ -68,15 +53,8 @@ static double ns_value(const pdf *p, uint64_t n, uint64_t seed)
     mc_rng rng = mc_rng_derive(seed, 99u);
     for (int i = 0; i < POOL; i++)
         pool[i] = pdf_generate(p, &rng);
-    double t[REPS];
-    for (int k = 0; k < REPS; k++) {
-        double acc = 0.0, t0 = now();
-        for (uint64_t i = 0; i < n; i++)
-            acc += pdf_value(p, pool[i & (POOL - 1)]);
-        t[k] = (now() - t0) * 1e9 / (double)n;
-        sink = acc;
-    }
-    return median(t);
+    value_job j = {p, pool};
+    return app_bench_ns(value_loop, &j, n, seed, REPS);
 }
 
 int main(int argc, char **argv)
@@ -113,8 +91,9 @@ int main(int argc, char **argv)
                 {"list-quad-sphere", &list}};
 
     printf("%-22s %12s %9s\n", "pdf", "ns_generate", "ns_value");
-    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
-        printf("%-22s %12.2f %9.2f\n", rows[i].name, ns_generate(rows[i].p, n, seed),
-               ns_value(rows[i].p, n, seed));
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        double gen = app_bench_ns(generate_loop, (void *)rows[i].p, n, seed, REPS);
+        printf("%-22s %12.2f %9.2f\n", rows[i].name, gen, ns_value(rows[i].p, n, seed));
+    }
     return 0;
 }

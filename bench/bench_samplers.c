@@ -11,32 +11,16 @@
  * Build and run: make bench   (or: make all && build/bench/bench_samplers
  *                [--samples N] [--seed S])
  */
-/* clock_gettime and its clocks are POSIX, not ISO C17. */
-#define _POSIX_C_SOURCE 200809L
-
 #include <stdio.h>
-#include <stdlib.h>
-#include <time.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/timing.h"
 #include "mc/rng.h"
 #include "samplers/cone.h"
 #include "samplers/hemisphere.h"
 #include "samplers/lobes.h"
 #include "samplers/planar.h"
 #include "samplers/sphere.h"
-
-/* CPU time of this thread, not wall time: on a machine shared with other
- * jobs (make -j, parallel tests) wall time counts their time slices too. */
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* Keeps the optimizer from dropping work whose result is otherwise unused. */
-static volatile double sink;
 
 /* One sampler behind a common signature; param carries n, alpha, cos_max. */
 typedef struct bench_case {
@@ -140,28 +124,14 @@ static const bench_case cases[] = {
     {"sphere-cone-d2R", d_sphere_cone, 2.0},
 };
 
-static int cmp_double(const void *a, const void *b)
+/* Draws n samples of the case (ctx) from rng; returns their coordinate sum. */
+static double draw_loop(void *ctx, uint64_t n, mc_rng *rng)
 {
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-/* The median over REPS runs of the time per sample, in ns. */
-enum { REPS = 5 };
-
-static double ns_per_sample(const bench_case *c, uint64_t n, uint64_t seed)
-{
-    double t[REPS];
-    for (int k = 0; k < REPS; k++) {
-        mc_rng rng = mc_rng_derive(seed, (uint64_t)k);
-        double acc = 0.0, t0 = now();
-        for (uint64_t i = 0; i < n; i++)
-            acc += c->draw(&rng, c->param);
-        t[k] = (now() - t0) * 1e9 / (double)n;
-        sink = acc;
-    }
-    qsort(t, REPS, sizeof t[0], cmp_double);
-    return t[REPS / 2];
+    const bench_case *c = ctx;
+    double acc = 0.0;
+    for (uint64_t i = 0; i < n; i++)
+        acc += c->draw(rng, c->param);
+    return acc;
 }
 
 int main(int argc, char **argv)
@@ -177,6 +147,7 @@ int main(int argc, char **argv)
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
     printf("%-26s %s\n", "sampler", "ns_per_sample");
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
-        printf("%-26s %.2f\n", cases[i].name, ns_per_sample(&cases[i], n, seed));
+        printf("%-26s %.2f\n", cases[i].name,
+               app_bench_ns(draw_loop, (void *)&cases[i], n, seed, 5));
     return 0;
 }

@@ -14,8 +14,6 @@
  *
  * Build and run:  make all && build/bin/integrate_x_sq --pdf all
  */
-#include <string.h>
-
 #include "examples/common/cli.h"
 #include "mc/integrate.h"
 #include "samplers/warp1d.h"
@@ -51,21 +49,20 @@ int main(int argc, char **argv)
     bool csv = false;
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "samples per method (default 1e6)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
         {"--pdf", APP_CHOICE, &pdf, "sampling density (default all)", pdfs, 0, 0},
-        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+        APP_OPT_CSV(&csv),
     };
     app_parse("integrate_x_sq", "integrate_x_sq [--pdf uniform|linear|quadratic|all] [--samples N]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
 
     app_table t = {stdout, csv, extra_cols, 1};
     app_table_begin(&t);
-    bool all = strcmp(pdf, "all") == 0;
-    if (all || strcmp(pdf, "uniform") == 0)
+    if (app_selected(pdf, "uniform"))
         run(&t, "uniform", (mc_warp1){uniform02_sample, uniform02_pdf}, seed, n);
-    if (all || strcmp(pdf, "linear") == 0)
+    if (app_selected(pdf, "linear"))
         run(&t, "linear", (mc_warp1){smp_linear_sample, smp_linear_pdf}, seed, n);
-    if (all || strcmp(pdf, "quadratic") == 0)
+    if (app_selected(pdf, "quadratic"))
         run(&t, "quadratic", (mc_warp1){smp_quadratic_sample, smp_quadratic_pdf}, seed, n);
     return 0;
 }

@@ -86,8 +86,8 @@ int main(int argc, char **argv)
     bool csv = false;
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "draws per method (default 1e6)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
-        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
+        APP_OPT_CSV(&csv),
     };
     app_parse("inverse_cdf", "inverse_cdf [--samples N] [--seed S] [--csv]", argc, argv, opts,
               sizeof opts / sizeof opts[0], NULL, 0);

@@ -18,8 +18,6 @@
  * Build and run:  make all && build/bin/light_pdf
  *                 build/bin/light_pdf --method light --samples 1e7 --csv
  */
-#include <string.h>
-
 #include "examples/common/cli.h"
 #include "pdf/experiments.h"
 #include "pdf/pdf.h"
@@ -56,9 +54,9 @@ int main(int argc, char **argv)
     bool csv = false;
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "directions per method (default 1e6)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
         {"--method", APP_CHOICE, &method, "sampling density (default all)", methods, 0, 0},
-        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+        APP_OPT_CSV(&csv),
     };
     app_parse("light_pdf", "light_pdf [--method light|cosine|all] [--samples N] [--seed S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
@@ -75,7 +73,7 @@ int main(int argc, char **argv)
     app_table t = {stdout, csv, extra_cols, 1};
     app_table_begin(&t);
     for (int m = 0; m < 2; m++) {
-        if (strcmp(method, "all") != 0 && strcmp(method, methods[m]) != 0)
+        if (!app_selected(method, methods[m]))
             continue;
         mc_rng rng = mc_rng_derive(seed, (uint64_t)m);
         mc_estimate e = pdf_integrate((pdf_fn){radiance_cos, &l}, &pdfs[m], &rng, n);

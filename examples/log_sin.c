@@ -20,7 +20,6 @@
  * Build and run:  make all && build/bin/log_sin --method all
  */
 #include <math.h>
-#include <string.h>
 
 #include "examples/common/cli.h"
 #include "mc/constants.h"
@@ -43,9 +42,9 @@ int main(int argc, char **argv)
     bool csv = false;
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "samples per method (default 1e6)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
         {"--method", APP_CHOICE, &method, "estimator (default all)", methods, 0, 0},
-        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+        APP_OPT_CSV(&csv),
     };
     app_parse("log_sin", "log_sin [--method plain|importance|all] [--samples N] [--seed S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
@@ -54,13 +53,12 @@ int main(int argc, char **argv)
     const mc_fn1 f = {log_sin, NULL};
     app_table t = {stdout, csv, extra_cols, 1};
     app_table_begin(&t);
-    bool all = strcmp(method, "all") == 0;
-    if (all || strcmp(method, "plain") == 0) {
+    if (app_selected(method, "plain")) {
         mc_rng rng = mc_rng_derive(seed, 0u);
         mc_estimate e = mc_integrate_uniform(f, 0.0, MC_PI, &rng, n, NULL);
         app_table_row(&t, "plain", e, exact, &e.variance);
     }
-    if (all || strcmp(method, "importance") == 0) {
+    if (app_selected(method, "importance")) {
         mc_rng rng = mc_rng_derive(seed, 1u);
         mc_warp1 w = {smp_log_ends_sample, smp_log_ends_pdf};
         mc_estimate e = mc_integrate_is(f, w, &rng, n, NULL);

@@ -49,10 +49,10 @@ int main(int argc, char **argv)
     int threads = 0;
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "number of points (default 1e8)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
         {"--method", APP_CHOICE, &method, "estimator (default all)", methods, 0, 0},
         {"--threads", APP_INT, &threads, "OpenMP threads, 0 = all (default 0)", NULL, 0, 1024},
-        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+        APP_OPT_CSV(&csv),
     };
     app_parse("pi", "pi [--method plain|stratified|running|all] [--samples N] [--seed S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
@@ -61,11 +61,11 @@ int main(int argc, char **argv)
     app_table_begin(&t);
     bool all = strcmp(method, "all") == 0;
     mc_estimate plain = {0, 0.0, 0.0, 0.0}, strat = plain;
-    if (all || strcmp(method, "plain") == 0)
+    if (app_selected(method, "plain"))
         row(&t, "plain", plain = mc_pi_plain(seed, n, threads, NULL));
-    if (all || strcmp(method, "stratified") == 0)
+    if (app_selected(method, "stratified"))
         row(&t, "stratified", strat = mc_pi_stratified(seed, n, threads, NULL));
-    if (all || strcmp(method, "running") == 0)
+    if (app_selected(method, "running"))
         running(&t, seed, n);
     if (all && !csv && strat.std_error > 0.0)
         printf("\nplain vs stratified at n = %llu: standard error %.2e vs %.2e (%.0fx; the\n"

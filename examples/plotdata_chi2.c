@@ -12,22 +12,20 @@
  *            pair and for a wrong one: directions uniform in (theta, phi)
  *            claimed to be uniform in solid angle (the missing sin theta).
  *            Correct: p-values uniform on [0, 1]. Wrong: piled up at 0.
+ * Histogram, quadrature and pooling are mc/gof.h's, the same as in
+ * `warp chi2` and in the test suite's harness.
  * Build and run:  make all && build/bin/plotdata_chi2 pvalues --seeds 200
  */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "examples/common/cli.h"
-#include "mc/chi2.h"
-#include "mc/quad.h"
-#include "mc/rng.h"
+#include "mc/gof.h"
 #include "samplers/hemisphere.h"
 #include "samplers/spherical.h"
 
 #define PROG "plotdata_chi2"
-#define MAX_CELLS 4096
 
 typedef struct pair {
     const char *name;
@@ -40,59 +38,47 @@ static const pair pairs[2] = {
     {"wrong", smp_theta_phi_sample, smp_uniform_hemisphere_pdf},
 };
 
-typedef struct grid {
-    int nc, np;            /* cells along cos theta in [0, 1] and phi in [0, 2 pi) */
-    double obs[MAX_CELLS]; /* row-major: cell (i, j) at i * np + j */
-    double exp[MAX_CELLS];
-} grid;
+static void param_sample(mc_rng *rng, void *ctx, double out[2])
+{
+    const pair *p = ctx;
+    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    vec3 w = p->sample(u1, u2);
+    out[0] = w.z, out[1] = smp_spherical_phi(w);
+}
 
 /* d omega = d cos_theta d phi: the density per unit solid angle is already
  * the density of the (cos theta, phi) rectangle. */
-static double param_pdf(double cos_theta, double phi, void *params)
+static double param_pdf(const double x[2], void *ctx)
 {
-    const pair *p = params;
-    return p->pdf(smp_spherical_direction(cos_theta, phi));
+    const pair *p = ctx;
+    return p->pdf(smp_spherical_direction(x[0], x[1]));
 }
 
-static void expected_counts(mc_quad *q, const pair *p, double n, grid *g)
+/* The pair's experiment on [0, 1] x [0, 2 pi] cut into nc x np cells. */
+static mc_gof_spec pair_spec(const pair *p, int nc, int np)
 {
-    mc_fn2 fn = {param_pdf, (void *)p};
-    for (int i = 0; i < g->nc; i++)
-        for (int j = 0; j < g->np; j++) {
-            double mass = 0.0;
-            /* A status other than 0 only means GSL's target was not met;
-             * the value is still far below the counts' Poisson noise. */
-            (void)mc_quad_2d(q, fn, (double)i / g->nc, (double)(i + 1) / g->nc, MC_2PI * j / g->np,
-                             MC_2PI * (j + 1) / g->np, &mass, NULL);
-            g->exp[i * g->np + j] = n * mass;
-        }
+    mc_gof_spec s = {2, {0.0, 0.0}, {1.0, MC_2PI}, {nc, np}, param_sample, param_pdf, (void *)p};
+    return s;
 }
 
-static void observed_counts(const pair *p, uint64_t n, uint64_t seed, grid *g)
+/* The observed counts of n samples from the stream of `seed`; returns the
+ * samples outside the rectangle. */
+static double observe(const mc_gof_spec *s, uint64_t n, uint64_t seed, double *obs)
 {
-    memset(g->obs, 0, sizeof g->obs);
+    memset(obs, 0, (size_t)mc_gof_cell_count(s) * sizeof *obs);
     mc_rng rng = mc_rng_derive(seed, 0);
-    for (uint64_t k = 0; k < n; k++) {
-        double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng);
-        vec3 w = p->sample(u1, u2);
-        int i = (int)(w.z * g->nc), j = (int)(smp_spherical_phi(w) / MC_2PI * g->np);
-        /* cos theta = 1 exactly belongs to the top row. */
-        i = i < 0 ? 0 : (i >= g->nc ? g->nc - 1 : i);
-        j = j >= g->np ? g->np - 1 : j;
-        g->obs[i * g->np + j] += 1.0;
-    }
+    return mc_gof_histogram(s, &rng, n, obs);
 }
 
-static void print_cells(const grid *g)
+static void print_cells(const mc_gof_spec *s, const double *obs, const double *expct)
 {
     printf("i,j,cos_lo,cos_hi,phi_lo,phi_hi,observed,expected,diff_sd\n");
-    for (int i = 0; i < g->nc; i++)
-        for (int j = 0; j < g->np; j++) {
-            double o = g->obs[i * g->np + j], e = g->exp[i * g->np + j];
-            printf("%d,%d,%.6f,%.6f,%.6f,%.6f,%.0f,%.6f,%.6f\n", i, j, (double)i / g->nc,
-                   (double)(i + 1) / g->nc, MC_2PI * j / g->np, MC_2PI * (j + 1) / g->np, o, e,
-                   e > 0.0 ? (o - e) / sqrt(e) : 0.0);
-        }
+    for (int c = 0; c < mc_gof_cell_count(s); c++) {
+        double b[4], o = obs[c], e = expct[c];
+        mc_gof_cell_box(s, c, b);
+        printf("%d,%d,%.6f,%.6f,%.6f,%.6f,%.0f,%.6f,%.6f\n", c / s->cells[1], c % s->cells[1],
+               b[0], b[1], b[2], b[3], o, e, e > 0.0 ? (o - e) / sqrt(e) : 0.0);
+    }
 }
 
 int main(int argc, char **argv)
@@ -111,28 +97,31 @@ int main(int argc, char **argv)
     if (npos != 1 || (strcmp(cmd[0], "cells") != 0 && strcmp(cmd[0], "pvalues") != 0))
         app_fail(PROG, "expected the command 'cells' or 'pvalues' (see --help)");
 
-    static grid g;
-    g.nc = nc, g.np = np;
-    mc_quad *q = mc_quad_create(1000);
-    if (!q)
-        app_fail(PROG, "out of memory");
+    static double obs[64 * 64], expct[64 * 64];
     if (strcmp(cmd[0], "cells") == 0) {
-        expected_counts(q, &pairs[0], (double)n, &g);
-        observed_counts(&pairs[0], n, seed, &g);
-        print_cells(&g);
+        mc_gof_spec s = pair_spec(&pairs[0], nc, np);
+        if (mc_gof_expected(&s, n, expct) != 0)
+            app_fail(PROG, "out of memory");
+        (void)observe(&s, n, seed, obs);
+        print_cells(&s, obs, expct);
     } else {
         printf("case,seed,n,chi2,dof,p\n");
         for (int c = 0; c < 2; c++) {
-            expected_counts(q, &pairs[c], (double)n, &g);
-            for (int s = 0; s < seeds; s++) {
-                observed_counts(&pairs[c], n, seed + (uint64_t)s, &g);
-                mc_chi2_result r = mc_chi2_pearson(g.obs, g.exp, (size_t)(nc * np), 5.0);
-                printf("%s,%llu,%llu,%.6f,%d,%.6e\n", pairs[c].name,
-                       (unsigned long long)(seed + (uint64_t)s), (unsigned long long)n, r.stat, r.dof,
-                       r.pvalue);
+            mc_gof_spec s = pair_spec(&pairs[c], nc, np);
+            /* The expected counts do not depend on the seed: once per pair. */
+            if (mc_gof_expected(&s, n, expct) != 0)
+                app_fail(PROG, "out of memory");
+            for (int k = 0; k < seeds; k++) {
+                uint64_t sd = seed + (uint64_t)k;
+                if (observe(&s, n, sd, obs) > 0.0)
+                    app_fail(PROG, "%s: a sample outside the rectangle (seed %llu)",
+                             pairs[c].name, (unsigned long long)sd);
+                mc_chi2_result r =
+                    mc_chi2_pearson(obs, expct, (size_t)(nc * np), MC_GOF_MIN_EXPECTED);
+                printf("%s,%llu,%llu,%.6f,%d,%.6e\n", pairs[c].name, (unsigned long long)sd,
+                       (unsigned long long)n, r.stat, r.dof, r.pvalue);
             }
         }
     }
-    mc_quad_destroy(q);
     return 0;
 }

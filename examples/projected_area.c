@@ -15,8 +15,6 @@
  * Build and run:  make all && build/bin/projected_area
  *                 build/bin/projected_area --body box --samples 1e7 --csv
  */
-#include <string.h>
-
 #include "examples/common/cli.h"
 #include "pdf/experiments.h"
 
@@ -39,9 +37,9 @@ int main(int argc, char **argv)
     bool csv = false;
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "directions per method (default 1e6)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
         {"--body", APP_CHOICE, &body, "convex body (default all)", bodies, 0, 0},
-        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+        APP_OPT_CSV(&csv),
     };
     app_parse("projected_area",
               "projected_area [--body box|sphere|all] [--samples N] [--seed S] [--csv]", argc, argv,
@@ -51,12 +49,11 @@ int main(int argc, char **argv)
     const pdf_body sphere = {false, vec3_make(0.0, 0.0, 0.0), 1.0};
     app_table t = {stdout, csv, extra_cols, 1};
     app_table_begin(&t);
-    bool all = strcmp(body, "all") == 0;
-    if (all || strcmp(body, "box") == 0) {
+    if (app_selected(body, "box")) {
         run(&t, "box-exact", box, false, seed, 0u, n);
         run(&t, "box-rays", box, true, seed, 1u, n);
     }
-    if (all || strcmp(body, "sphere") == 0) {
+    if (app_selected(body, "sphere")) {
         run(&t, "sphere-exact", sphere, false, seed, 2u, n);
         run(&t, "sphere-rays", sphere, true, seed, 3u, n);
     }

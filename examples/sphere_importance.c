@@ -12,8 +12,6 @@
  * Build and run:  make all && build/bin/sphere_importance
  *                 build/bin/sphere_importance --samples 1e7 --csv
  */
-#include <string.h>
-
 #include "examples/common/cli.h"
 #include "mc/constants.h"
 #include "pdf/experiments.h"
@@ -54,9 +52,9 @@ int main(int argc, char **argv)
     bool csv = false;
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "directions per method (default 1e6)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
         {"--method", APP_CHOICE, &method, "uniform sampler (default all)", methods, 0, 0},
-        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+        APP_OPT_CSV(&csv),
     };
     app_parse("sphere_importance",
               "sphere_importance [--method inverse|gaussian|rejection|all] [--samples N] [--seed "
@@ -67,7 +65,7 @@ int main(int argc, char **argv)
     app_table_begin(&t);
     const double exact = MC_4PI / 3.0;
     for (int m = 0; m < 3; m++) {
-        if (strcmp(method, "all") != 0 && strcmp(method, methods[m]) != 0)
+        if (!app_selected(method, methods[m]))
             continue;
         mc_rng rng = mc_rng_derive(seed, (uint64_t)m);
         mc_estimate e =

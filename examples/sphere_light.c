@@ -18,7 +18,6 @@
  *                 build/bin/sphere_light --radius 0.9 --distance 1.5 --theta 20 --csv
  */
 #include <math.h>
-#include <string.h>
 
 #include "examples/common/cli.h"
 #include "mc/constants.h"
@@ -43,14 +42,14 @@ int main(int argc, char **argv)
     double flux = 10.0, radius = 0.5, dist = 3.0, theta_deg = 30.0;
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "samples per method (default 1e6)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
         {"--method", APP_CHOICE, &method, "sampling strategy (default all)", methods, 0, 0},
         {"--flux", APP_DOUBLE, &flux, "the light's flux Phi (default 10)", NULL, 1e-300, 1e300},
         {"--radius", APP_DOUBLE, &radius, "the light's radius r (default 0.5)", NULL, 1e-6, 1e6},
         {"--distance", APP_DOUBLE, &dist, "distance d to its centre (default 3)", NULL, 1e-6, 1e6},
         {"--theta", APP_DOUBLE, &theta_deg, "angle from the normal, degrees (default 30)", NULL,
          0.0, 90.0},
-        {"--csv", APP_FLAG, &csv, "print CSV instead of a table", NULL, 0, 0},
+        APP_OPT_CSV(&csv),
     };
     app_parse("sphere_light",
               "sphere_light [--method area|cone|all] [--flux F] [--radius R] [--distance D] "
@@ -69,13 +68,12 @@ int main(int argc, char **argv)
 
     app_table t = {stdout, csv, extra_cols, 1};
     app_table_begin(&t);
-    bool all = strcmp(method, "all") == 0;
-    if (all || strcmp(method, "area") == 0) {
+    if (app_selected(method, "area")) {
         mc_rng rng = mc_rng_derive(seed, 0u);
         mc_estimate e = pdf_sphere_light_by_area(origin, up, center, radius, radiance, &rng, n);
         app_table_row(&t, "area", e, exact, &e.variance);
     }
-    if (all || strcmp(method, "cone") == 0) {
+    if (app_selected(method, "cone")) {
         mc_rng rng = mc_rng_derive(seed, 1u);
         pdf cone = pdf_toward_sphere(origin, center, radius);
         mc_estimate e = pdf_integrate((pdf_fn){radiance_cos, &radiance}, &cone, &rng, n);

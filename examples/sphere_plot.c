@@ -25,7 +25,7 @@ int main(int argc, char **argv)
     const char *method = "inverse";
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "number of points (default 1000)", NULL, 0, 0},
-        {"--seed", APP_SEED, &seed, "random seed (default 1)", NULL, 0, 0},
+        APP_OPT_SEED(&seed),
         {"--method", APP_CHOICE, &method, "sampler (default inverse)", methods, 0, 0},
     };
     app_parse("sphere_plot",

@@ -7,9 +7,6 @@
  * fewer subintervals. */
 #define QUAD_LIMIT 1000
 
-/* Cells with an expected count below this are pooled (the textbook rule). */
-#define MIN_EXPECTED 5.0
-
 int mc_gof_cell_count(const mc_gof_spec *spec)
 {
     return spec->dims == 2 ? spec->cells[0] * spec->cells[1] : spec->cells[0];
@@ -77,32 +74,49 @@ double mc_gof_integrate(const mc_gof_spec *spec, mc_quad *q)
     return integrate_box(spec, q, spec->lo[0], spec->hi[0], spec->lo[1], spec->hi[1]);
 }
 
-int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct)
+void mc_gof_cell_box(const mc_gof_spec *spec, int c, double box[4])
 {
     int nx = spec->cells[0], ny = spec->dims == 2 ? spec->cells[1] : 1;
+    int i = c / ny, j = c % ny;
     double wx = (spec->hi[0] - spec->lo[0]) / nx;
-    double wy = spec->dims == 2 ? (spec->hi[1] - spec->lo[1]) / ny : 0.0;
+    box[0] = spec->lo[0] + i * wx;
+    box[1] = i == nx - 1 ? spec->hi[0] : box[0] + wx;
+    box[2] = box[3] = 0.0;
+    if (spec->dims == 2) {
+        double wy = (spec->hi[1] - spec->lo[1]) / ny;
+        box[2] = spec->lo[1] + j * wy;
+        box[3] = j == ny - 1 ? spec->hi[1] : box[2] + wy;
+    }
+}
+
+int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob)
+{
+    int cells = mc_gof_cell_count(spec);
     int failed = 0;
 #pragma omp parallel reduction(| : failed)
     {
         mc_quad *q = mc_quad_create(QUAD_LIMIT);
         failed |= q == NULL;
 #pragma omp for schedule(dynamic, 16)
-        for (int c = 0; c < nx * ny; c++) {
-            int i = c / ny, j = c % ny;
-            /* Edges from the index, not accumulated, so the last is hi. */
-            double x0 = spec->lo[0] + i * wx, x1 = i == nx - 1 ? spec->hi[0] : x0 + wx;
-            double y0 = 0.0, y1 = 0.0;
-            if (spec->dims == 2) {
-                y0 = spec->lo[1] + j * wy;
-                y1 = j == ny - 1 ? spec->hi[1] : y0 + wy;
-            }
-            double prob = q ? integrate_box(spec, q, x0, x1, y0, y1) : (double)NAN;
-            expct[c] = prob < MC_GOF_ZERO_CELL_PROB ? 0.0 : prob * (double)n;
+        for (int c = 0; c < cells; c++) {
+            double b[4];
+            mc_gof_cell_box(spec, c, b);
+            prob[c] = q ? integrate_box(spec, q, b[0], b[1], b[2], b[3]) : (double)NAN;
         }
         mc_quad_destroy(q);
     }
     return failed ? -1 : 0;
+}
+
+int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct)
+{
+    int status = mc_gof_cell_probs(spec, expct);
+    int cells = mc_gof_cell_count(spec);
+    /* The quadrature's own zero (its absolute tolerance is 1e-12) is an
+     * exactly-zero cell for the test; NaN stays NaN. */
+    for (int c = 0; c < cells; c++)
+        expct[c] = expct[c] < MC_GOF_ZERO_CELL_PROB ? 0.0 : expct[c] * (double)n;
+    return status;
 }
 
 mc_gof_result mc_gof_test(const mc_gof_spec *spec, uint64_t n, mc_rng *rng, double alpha,
@@ -118,7 +132,7 @@ mc_gof_result mc_gof_test(const mc_gof_spec *spec, uint64_t n, mc_rng *rng, doub
     bool finite = true;
     for (int c = 0; c < cells; c++)
         finite = finite && isfinite(expct[c]);
-    res.r = mc_chi2_pearson(obs, expct, (size_t)cells, MIN_EXPECTED);
+    res.r = mc_chi2_pearson(obs, expct, (size_t)cells, MC_GOF_MIN_EXPECTED);
     res.reject = !finite || !(res.r.pvalue >= alpha) || res.outside > 0.0 ||
                  res.r.obs_in_zero_cells > MC_GOF_ZERO_CELL_FRAC * (double)n;
     return res;

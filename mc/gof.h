@@ -5,10 +5,11 @@
  * it that every user repeats: count samples in the cells of a rectangle of
  * some parameterization, and integrate the claimed density over each cell
  * (adaptive quadrature, never the value at the cell centre) to get the
- * expected counts. Programs that check samplers (the `warp` tool) link it;
- * the test suite's harness (tests/support/chi2_harness) follows the same
- * rules. Serves chapter 5 ("Generating Random Directions") and every
- * sampler and pdf object after it.
+ * expected counts. The `warp` tool, the chi-square figures of `make plots`
+ * and the test suite's harness (tests/support/chi2_harness, a thin wrapper
+ * that adds names and CSV dumps) all run through it. Serves chapter 5
+ * ("Generating Random Directions") and every sampler and pdf object after
+ * it.
  *
  * Parameterizations: (cos theta, phi) for directions, where a density per
  * unit solid angle is already a density of the rectangle, because
@@ -59,10 +60,25 @@ int mc_gof_cell_count(const mc_gof_spec *spec);
  * with a cell edge; any real leak of mass is far larger. */
 #define MC_GOF_ZERO_CELL_FRAC 1e-6
 
+/* Cells with an expected count below this are pooled (the textbook rule
+ * of thumb for the chi-square approximation). */
+#define MC_GOF_MIN_EXPECTED 5.0
+
+/* The bounds of cell c (0 <= c < mc_gof_cell_count): box = {x0, x1, y0,
+ * y1}, y0 = y1 = 0 when dims == 1. Edges come from the index, not by
+ * accumulation, so the last edge is exactly hi. */
+void mc_gof_cell_box(const mc_gof_spec *spec, int c, double box[4]);
+
 /* Adds n samples drawn from rng to obs[0 .. mc_gof_cell_count) (the caller
  * zeroes it first) and returns how many fell outside the rectangle (NaN
  * coordinates count as outside). */
 double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double *obs);
+
+/* Writes the density's integral over every cell (its probability, no
+ * zero threshold) to prob[0 .. mc_gof_cell_count). Cells are shared among
+ * OpenMP threads, each with its own workspace. Returns 0, or -1 when a
+ * workspace could not be allocated (its cells are then NaN). */
+int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob);
 
 /* Writes n times the density's integral over every cell to
  * expct[0 .. mc_gof_cell_count), 0 for cells below MC_GOF_ZERO_CELL_PROB.
@@ -71,9 +87,11 @@ double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double
  * of expct are then unspecified). */
 int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct);
 
-/* The density's integral over the whole rectangle (q from mc_quad_create);
- * 1 to the quadrature's accuracy for a normalized density whose support
- * lies inside the rectangle. */
+/* The density's integral over the whole rectangle in one adaptive rule
+ * (q from mc_quad_create); 1 to the quadrature's accuracy for a normalized
+ * density whose support lies inside the rectangle. Where a support edge
+ * crosses the rectangle (a triangle's hypotenuse) the sum of
+ * mc_gof_cell_probs converges more reliably. */
 double mc_gof_integrate(const mc_gof_spec *spec, mc_quad *q);
 
 /* Outcome of mc_gof_test. */

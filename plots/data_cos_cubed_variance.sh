@@ -8,10 +8,6 @@ source "$(dirname "$0")/lib.sh"
 p=$(prog cos_cubed)
 hi=6 seeds=32
 [ "$PLOTS_QUICK" = 1 ] && hi=4
-raw=$DATA/cos_cubed_variance.raw.tmp
-: >"$raw"
+raw=$(new_raw cos_cubed_variance)
 sweep "$raw" "$p" "$(n_list 1 "$hi" 2)" "$seeds" 400000 --method all
-rms cos_cubed <"$raw" >"$DATA/cos_cubed_variance.csv.tmp"
-fit rms_error <"$DATA/cos_cubed_variance.csv.tmp" >"$DATA/cos_cubed_variance_slopes.csv.tmp"
-rm -f "$raw"
-publish cos_cubed_variance_slopes.csv cos_cubed_variance.csv
+rms_publish "$raw" cos_cubed cos_cubed_variance fit

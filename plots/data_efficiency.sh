@@ -10,8 +10,8 @@
 # variance * seconds_per_sample / (0.01 exact)^2 is the CPU time it takes to
 # bring the standard error down to 1% of the answer: lower is better.
 # Stratified pi is left out: its variance per sample is not a constant.
-# The mixture rows come from plotdata_mixture (mixture.c's experiment with a
-# --method option: mixture itself runs its five rows in one process).
+# The mixture rows run `mixture --method NAME`, one integrand-density pair
+# per process.
 source "$(dirname "$0")/lib.sh"
 target=0.25 repeats=2
 [ "$PLOTS_QUICK" = 1 ] && target=0.04 repeats=1
@@ -70,8 +70,8 @@ sphere_importance sphere_importance --method inverse gaussian rejection
 cos_cubed cos_cubed --method uniform cosine
 light_pdf light_pdf --method light cosine
 sphere_light sphere_light --method area cone
-mixture_light plotdata_mixture --method light-cosine light-light light-mixture
-mixture_sky plotdata_mixture --method sky-cosine sky-mixture
+mixture_light mixture --method light-cosine light-light light-mixture
+mixture_sky mixture --method sky-cosine sky-mixture
 LIST
 rm -f "$tmp"
 publish efficiency.csv

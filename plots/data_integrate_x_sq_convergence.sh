@@ -8,10 +8,6 @@ source "$(dirname "$0")/lib.sh"
 p=$(prog integrate_x_sq)
 hi=6 seeds=32
 [ "$PLOTS_QUICK" = 1 ] && hi=4
-raw=$DATA/integrate_x_sq_convergence.raw.tmp
-: >"$raw"
+raw=$(new_raw integrate_x_sq_convergence)
 sweep "$raw" "$p" "$(n_list 1 "$hi" 2)" "$seeds" 200000 --pdf all
-rms integrate_x_sq <"$raw" >"$DATA/integrate_x_sq_convergence.csv.tmp"
-fit rms_error <"$DATA/integrate_x_sq_convergence.csv.tmp" >"$DATA/integrate_x_sq_convergence_slopes.csv.tmp"
-rm -f "$raw"
-publish integrate_x_sq_convergence_slopes.csv integrate_x_sq_convergence.csv
+rms_publish "$raw" integrate_x_sq integrate_x_sq_convergence fit

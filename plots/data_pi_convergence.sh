@@ -6,12 +6,8 @@ source "$(dirname "$0")/lib.sh"
 p=$(prog pi)
 hi=8 seeds=64
 [ "$PLOTS_QUICK" = 1 ] && hi=6
-raw=$DATA/pi_convergence.raw.tmp
-: >"$raw"
+raw=$(new_raw pi_convergence)
 for m in plain stratified; do
     sweep "$raw" "$p" "$(n_list 2 "$hi" 2)" "$seeds" 100000 --method "$m"
 done
-rms pi <"$raw" >"$DATA/pi_convergence.csv.tmp"
-fit rms_error <"$DATA/pi_convergence.csv.tmp" >"$DATA/pi_convergence_slopes.csv.tmp"
-rm -f "$raw"
-publish pi_convergence_slopes.csv pi_convergence.csv
+rms_publish "$raw" pi pi_convergence fit

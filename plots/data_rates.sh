@@ -17,9 +17,6 @@ esac
 p=$(prog "$name")
 hi=5 seeds=64
 [ "$PLOTS_QUICK" = 1 ] && hi=4 seeds=16
-raw=$DATA/rates_$name.raw.tmp
-: >"$raw"
+raw=$(new_raw "rates_$name")
 sweep "$raw" "$p" "$(n_list 2 "$hi" 2)" "$seeds" 300000 "${args[@]}"
-rms "$name" <"$raw" >"$DATA/rates_$name.csv.tmp"
-rm -f "$raw"
-publish "rates_$name.csv"
+rms_publish "$raw" "$name" "rates_$name"

@@ -67,6 +67,27 @@ fit() {
     awk -F, -v ycol="$1" -f "$LIBDIR/fit.awk"
 }
 
+# new_raw STEM  ->  the path of an empty scratch file for STEM's sweep rows.
+new_raw() {
+    : >"$DATA/$1.raw.tmp"
+    echo "$DATA/$1.raw.tmp"
+}
+
+# rms_publish RAW TAG STEM [fit]: reduces the sweep rows in RAW to the RMS
+# table STEM.csv (series tagged TAG) and, with "fit", its fitted slopes
+# STEM_slopes.csv; removes RAW and publishes the files (STEM.csv last).
+rms_publish() {
+    local raw=$1 tag=$2 stem=$3
+    rms "$tag" <"$raw" >"$DATA/$stem.csv.tmp"
+    rm -f "$raw"
+    if [ "${4:-}" = fit ]; then
+        fit rms_error <"$DATA/$stem.csv.tmp" >"$DATA/${stem}_slopes.csv.tmp"
+        publish "${stem}_slopes.csv" "$stem.csv"
+    else
+        publish "$stem.csv"
+    fi
+}
+
 # Scripts write NAME.tmp and, when everything succeeded, publish the
 # files in order (the figure's main CSV last, as make looks at that one), so
 # an interrupted or failed run never leaves a half-written file that make

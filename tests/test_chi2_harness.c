@@ -187,6 +187,19 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* Kolmogorov-Smirnov test of p[0..n) (sorted in place) against the uniform
+ * law on [0, 1]: the statistic D in *d and P(K > D (sqrt n + 0.12 +
+ * 0.11 / sqrt n)), Stephens' small-sample correction. */
+static double ks_uniform_q(double *p, int n, double *d)
+{
+    qsort(p, (size_t)n, sizeof p[0], cmp_double);
+    *d = 0.0;
+    for (int i = 0; i < n; i++)
+        *d = fmax(*d, fmax((i + 1.0) / n - p[i], p[i] - (double)i / n));
+    double sq = sqrt((double)n);
+    return kolmogorov_q(*d * (sq + 0.12 + 0.11 / sq));
+}
+
 /* Calibration: 200 independent runs (seeds derived from 3004 by index) of
  * the correct sampler sqrt(u) against 2x, 2 * 10^4 samples in 50 cells
  * each (expected >= 8 per cell, no pooling). Their p-values must be
@@ -209,12 +222,7 @@ static void test_chi2_harness_pvalues_uniform(void **state)
             chi2_run(&s, 20000u, mc_rng_u32(&r) | ((uint64_t)mc_rng_u32(&r) << 32), 1e-300);
         p[i] = o.r.pvalue;
     }
-    qsort(p, RUNS, sizeof p[0], cmp_double);
-    double d = 0.0;
-    for (int i = 0; i < RUNS; i++)
-        d = fmax(d, fmax((i + 1.0) / RUNS - p[i], p[i] - (double)i / RUNS));
-    double sq = sqrt((double)RUNS);
-    double q = kolmogorov_q(d * (sq + 0.12 + 0.11 / sq));
+    double d, q = ks_uniform_q(p, RUNS, &d);
     printf("chi2 harness calibration: %d p-values, KS D = %.4f, P = %.4g\n", RUNS, d, q);
     if (q < 1e-4)
         fail_msg("p-values of a correct sampler are not uniform: D %.4f, P %.3g (seed %llu)", d, q,
@@ -246,12 +254,7 @@ static void test_chi2_harness_pvalues_negative_control(void **state)
         chi2_outcome o = chi2_run(&s, 20000u, seed + (uint64_t)i * 7919u, 1e-300);
         p[i] = o.r.pvalue;
     }
-    qsort(p, RUNS, sizeof p[0], cmp_double);
-    double d = 0.0;
-    for (int i = 0; i < RUNS; i++)
-        d = fmax(d, fmax((i + 1.0) / RUNS - p[i], p[i] - (double)i / RUNS));
-    double sq = sqrt((double)RUNS);
-    double q = kolmogorov_q(d * (sq + 0.12 + 0.11 / sq));
+    double d, q = ks_uniform_q(p, RUNS, &d);
     printf("chi2 harness calibration negative control: KS D = %.4f, P = %.4g\n", d, q);
     assert_true(negctl_record(t, "p-values of a 3%-wrong pdf", "KS calibration", q < 1e-4));
 }

@@ -1,6 +1,7 @@
 /* tests/test_gof.c - mc/gof.h, the histogram + per-cell quadrature +
  * Pearson test behind `warp chi2`: correct samplers pass, wrong ones and
- * leaks are rejected, the normalization integral is exact. */
+ * leaks are rejected, the normalization integral is exact, the cells
+ * tile the rectangle. */
 #include "tests/support/mc_test.h"
 
 #include <math.h>
@@ -94,6 +95,47 @@ static void test_gof_integrate(void **state)
     mc_quad_destroy(q);
 }
 
+/* The cells tile the rectangle (first and last edges exact, neighbours
+ * within round-off), their probabilities sum to the whole integral, and
+ * the expected counts are n times them, 0 where the pdf vanishes. */
+static void test_gof_cells(void **state)
+{
+    (void)state;
+    mc_gof_spec odd = {1, {-0.3, 0.0}, {2.385, 0.0}, {7, 1}, sample_plain, pdf_upper_half, NULL};
+    mc_gof_spec disc = {2, {0.0, 0.0}, {1.0, MC_2PI}, {40, 60}, sample_disc, pdf_disc, NULL};
+    static double prob[MAX_CELLS], expct[MAX_CELLS];
+    double box[4], prev[4];
+    for (int c = 0; c < 7; c++) {
+        mc_gof_cell_box(&odd, c, box);
+        assert_true(c > 0 || box[0] == -0.3);
+        assert_true(c < 6 || box[1] == 2.385);
+        if (c > 0)
+            assert_near(box[0], prev[1], 1e-15);
+        assert_true(box[2] == 0.0 && box[3] == 0.0);
+        memcpy(prev, box, sizeof box);
+    }
+    mc_gof_cell_box(&disc, 40 * 60 - 1, box);
+    assert_true(box[1] == 1.0 && box[3] == MC_2PI);
+    mc_gof_cell_box(&disc, 61, box); /* cell (1, 1) */
+    assert_near(box[0], 1.0 / 40.0, 1e-16);
+    assert_near(box[2], MC_2PI / 60.0, 1e-15);
+
+    assert_int_equal(mc_gof_cell_probs(&disc, prob), 0);
+    double sum = 0.0;
+    for (int c = 0; c < 40 * 60; c++)
+        sum += prob[c];
+    assert_near(sum, 1.0, 1e-12);
+    /* pdf_upper_half on [0, 2.5] in 5 cells: all its mass in cell 1,
+     * whose edges are its jumps. */
+    mc_gof_spec half = {1, {0.0, 0.0}, {2.5, 0.0}, {5, 1}, sample_plain, pdf_upper_half, NULL};
+    assert_int_equal(mc_gof_cell_probs(&half, prob), 0);
+    assert_int_equal(mc_gof_expected(&half, 1000u, expct), 0);
+    for (int c = 0; c < 5; c++)
+        assert_true(expct[c] == (prob[c] < MC_GOF_ZERO_CELL_PROB ? 0.0 : 1000.0 * prob[c]));
+    assert_near(prob[1], 1.0, 1e-12);
+    assert_true(expct[0] == 0.0 && expct[2] == 0.0 && expct[3] == 0.0 && expct[4] == 0.0);
+}
+
 /* Each wrong experiment is rejected, and for the reason meant. */
 static void test_gof_negative_controls(void **state)
 {
@@ -124,6 +166,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_gof_correct_samplers_pass),
         cmocka_unit_test(test_gof_integrate),
+        cmocka_unit_test(test_gof_cells),
         cmocka_unit_test(test_gof_negative_controls),
     };
     return cmocka_run_group_tests_name("test_gof", tests, negctl_group_setup,

@@ -73,6 +73,15 @@ static void test_pi_z_negative_controls(void **state)
     assert_true(a && b);
 }
 
+/* One point of the integer hit test of mc/pi.h, scalar: cell centres
+ * (2a + 1) / 2^31 from a = u >> 2, inside when (2a+1)^2 + (2b+1)^2 < 2^62. */
+static uint64_t ref_hit(mc_rng *g)
+{
+    uint64_t x = 2u * (uint64_t)(mc_rng_u32(g) >> 2) + 1u;
+    uint64_t y = 2u * (uint64_t)(mc_rng_u32(g) >> 2) + 1u;
+    return x * x + y * y < (UINT64_C(1) << 62);
+}
+
 /* The SIMD kernel counts exactly what the layout in mc/pi.h says: a plain
  * scalar loop over blocks and lanes reproduces its hit count. n covers two
  * full blocks, a partial block with whole rounds and 5 leftover samples. */
@@ -88,10 +97,7 @@ static void test_pi_plain_matches_reference(void **state)
             lane[l] = mc_rng_derive(seed, b * MC_PI_LANES + (uint64_t)l);
         for (uint64_t i = 0; i < count; i++) {
             /* Whole rounds go lane by lane; the rest stays on lane 0. */
-            mc_rng *g = i < count - count % MC_PI_LANES ? &lane[i % MC_PI_LANES] : &lane[0];
-            uint64_t x = 2u * (uint64_t)(mc_rng_u32(g) >> 2) + 1u;
-            uint64_t y = 2u * (uint64_t)(mc_rng_u32(g) >> 2) + 1u;
-            ref += x * x + y * y < (UINT64_C(1) << 62);
+            ref += ref_hit(i < count - count % MC_PI_LANES ? &lane[i % MC_PI_LANES] : &lane[0]);
         }
     }
     uint64_t hits;
@@ -124,11 +130,8 @@ static void test_pi_stratified_matches_reference(void **state)
         }
     }
     mc_rng extra = mc_rng_derive(seed, UINT64_C(0xC000000000000001));
-    for (uint64_t k = 0; k < n - sx * sy; k++) {
-        uint64_t x = 2u * (uint64_t)(mc_rng_u32(&extra) >> 2) + 1u;
-        uint64_t y = 2u * (uint64_t)(mc_rng_u32(&extra) >> 2) + 1u;
-        ref += x * x + y * y < (UINT64_C(1) << 62);
-    }
+    for (uint64_t k = 0; k < n - sx * sy; k++)
+        ref += ref_hit(&extra);
     uint64_t hits;
     (void)mc_pi_stratified(seed, n, 1, &hits);
     assert_int_equal(hits, ref);

@@ -25,42 +25,15 @@
 enum { N_CHI2 = 1000000 };
 
 /* Wrappers from the samplers' signatures to warp_case's. */
-#define WRAP_SAMPLE(fn, call)                                                                      \
-    static vec3 fn(double u1, double u2, const warp_case *c)                                       \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return call;                                                                               \
-    }
-#define WRAP_PDF(fn, call)                                                                         \
-    static double fn(vec3 w, const warp_case *c)                                                   \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return call;                                                                               \
-    }
-#define WRAP_INV(fn, call)                                                                         \
-    static vec2 fn(vec3 w, const warp_case *c)                                                     \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return call;                                                                               \
-    }
-
-WRAP_SAMPLE(s_sphere, smp_uniform_sphere_sample(u1, u2))
-WRAP_PDF(p_sphere, smp_uniform_sphere_pdf(w))
-WRAP_INV(i_sphere, smp_uniform_sphere_invert(w))
-WRAP_SAMPLE(s_hemi, smp_uniform_hemisphere_sample(u1, u2))
-WRAP_PDF(p_hemi, smp_uniform_hemisphere_pdf(w))
-WRAP_INV(i_hemi, smp_uniform_hemisphere_invert(w))
-WRAP_SAMPLE(s_flip, smp_hemisphere_flip_sample(u1, u2))
-WRAP_SAMPLE(s_cos, smp_cosine_hemisphere_sample(u1, u2))
-WRAP_SAMPLE(s_cos_malley, smp_cosine_hemisphere_sample_malley(u1, u2))
-WRAP_SAMPLE(s_cos_acos, smp_cosine_hemisphere_sample_acos(u1, u2))
-WRAP_PDF(p_cos, smp_cosine_hemisphere_pdf(w))
-WRAP_INV(i_cos, smp_cosine_hemisphere_invert(w))
-WRAP_INV(i_cos_malley, smp_cosine_hemisphere_invert_malley(w))
-WRAP_INV(i_cos_acos, smp_cosine_hemisphere_invert_acos(w))
-WRAP_SAMPLE(s_tp, smp_theta_phi_sample(u1, u2))
-WRAP_PDF(p_tp, smp_theta_phi_pdf(w))
-WRAP_INV(i_tp, smp_theta_phi_invert(w))
+WARP_TRIO(sphere, uniform_sphere)
+WARP_TRIO(hemi, uniform_hemisphere)
+WARP_TRIO(cos, cosine_hemisphere)
+WARP_TRIO(tp, theta_phi)
+WARP_WRAP_SAMPLE(s_flip, smp_hemisphere_flip_sample(u1, u2))
+WARP_WRAP_SAMPLE(s_cos_malley, smp_cosine_hemisphere_sample_malley(u1, u2))
+WARP_WRAP_SAMPLE(s_cos_acos, smp_cosine_hemisphere_sample_acos(u1, u2))
+WARP_WRAP_INV(i_cos_malley, smp_cosine_hemisphere_invert_malley(w))
+WARP_WRAP_INV(i_cos_acos, smp_cosine_hemisphere_invert_acos(w))
 
 static vec3 s_sphere_gauss(mc_rng *rng, const warp_case *c)
 {
@@ -183,47 +156,16 @@ static void test_cosine_book_equals_acos(void **state)
 
 /* --- negative controls -------------------------------------------------- */
 
-static double p_cos_no_inv_pi(vec3 w, const warp_case *c)
-{
-    (void)c;
-    return w.z > 0.0 ? w.z : 0.0;
-}
-
-static double p_cos_twice(vec3 w, const warp_case *c)
-{
-    (void)c;
-    return 2.0 * smp_cosine_hemisphere_pdf(w);
-}
-
-static double p_cos_1pct(vec3 w, const warp_case *c)
-{
-    (void)c;
-    return 1.01 * smp_cosine_hemisphere_pdf(w);
-}
+WARP_WRAP_PDF(p_cos_no_inv_pi, w.z > 0.0 ? w.z : 0.0)
+WARP_WRAP_PDF(p_cos_twice, 2.0 * smp_cosine_hemisphere_pdf(w))
+WARP_WRAP_PDF(p_cos_1pct, 1.01 * smp_cosine_hemisphere_pdf(w))
 
 /* theta uniform in [0, pi/2]: the Riemann mapping mistaken for a uniform
  * hemisphere (the sin theta of the solid angle forgotten). */
-static vec3 s_theta_linear(double u1, double u2, const warp_case *c)
-{
-    (void)c;
-    return smp_theta_phi_sample(u1, u2);
-}
+WARP_WRAP_SAMPLE(s_theta_linear, smp_theta_phi_sample(u1, u2))
 
 /* The unflipped sphere sample given the hemisphere's pdf. */
-WRAP_SAMPLE(s_sphere_unflipped, smp_uniform_sphere_sample(u1, u2))
-
-static bool caught_by_norm(const warp_case *c)
-{
-    return !(fabs(warp_norm_error(c)) <= WARP_NORM_TOL);
-}
-
-static bool caught_by_chi2(const warp_case *c, uint64_t seed)
-{
-    chi2_outcome o = warp_chi2(c, N_CHI2, seed);
-    chi2_spec s = warp_chi2_spec(c);
-    chi2_print(&s, &o);
-    return o.reject;
-}
+WARP_WRAP_SAMPLE(s_sphere_unflipped, smp_uniform_sphere_sample(u1, u2))
 
 /* Each control goes through the check that should catch it, and the
  * correct pdf's normalization shows it is a property of the bug and not of
@@ -234,24 +176,24 @@ static void test_negative_controls(void **state)
     uint64_t seed = mc_test_seed(4005u);
     warp_case c = COS_CASE("negctl-cosine-no-inv-pi", s_cos, NULL);
     c.pdf = p_cos_no_inv_pi;
-    assert_true(negctl_record(t, "cosine pdf without 1/pi", "normalization", caught_by_norm(&c)));
+    assert_true(negctl_record(t, "cosine pdf without 1/pi", "normalization", warp_norm_rejects(&c)));
     c.pdf = p_cos_twice;
     c.name = "negctl-cosine-twice";
     assert_true(negctl_record(t, "cosine pdf times 2 (early erratum)", "normalization",
-                              caught_by_norm(&c)));
+                              warp_norm_rejects(&c)));
     /* A 1% scale error: normalization catches it for sure; for chi-square
      * with 10^6 samples in 5000 cells it adds about 10^-4 n = 100 to the
      * statistic, one standard deviation (sqrt(2 dof) = 100): usually missed. */
     c.pdf = p_cos_1pct;
     c.name = "negctl-cosine-1pct";
-    assert_true(negctl_record(t, "cosine pdf 1% too large", "normalization", caught_by_norm(&c)));
+    assert_true(negctl_record(t, "cosine pdf 1% too large", "normalization", warp_norm_rejects(&c)));
     printf("  (the same 1%% error under chi-square alone: %s)\n",
-           caught_by_chi2(&c, seed) ? "rejected" : "not rejected");
+           warp_chi2_rejects(&c, N_CHI2, seed) ? "rejected" : "not rejected");
 
     warp_case h = DIR_CASE("negctl-theta-linear-as-uniform", s_theta_linear, p_hemi, NULL, 0.0);
     assert_true(fabs(warp_norm_error(&h)) <= WARP_NORM_TOL); /* the pdf itself is normalized */
     assert_true(negctl_record(t, "theta = (pi/2) u given the uniform hemisphere pdf", "chi-square",
-                              caught_by_chi2(&h, seed)));
+                              warp_chi2_rejects(&h, N_CHI2, seed)));
 
     warp_case f = DIR_CASE("negctl-hemisphere-not-flipped", s_sphere_unflipped, p_hemi, NULL, 0.0);
     warp_domain d = warp_check_domain(&f, 100000u, seed);

@@ -30,42 +30,10 @@
 enum { N_CHI2 = 1000000 };
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
-static vec3 s_phong(double u1, double u2, const warp_case *c)
-{
-    return smp_phong_lobe_sample(u1, u2, c->param);
-}
-static double p_phong(vec3 w, const warp_case *c)
-{
-    return smp_phong_lobe_pdf(w, c->param);
-}
-static vec2 i_phong(vec3 w, const warp_case *c)
-{
-    return smp_phong_lobe_invert(w, c->param);
-}
-static vec3 s_ggx(double u1, double u2, const warp_case *c)
-{
-    return smp_ggx_sample(u1, u2, c->param);
-}
-static double p_ggx(vec3 w, const warp_case *c)
-{
-    return smp_ggx_pdf(w, c->param);
-}
-static vec2 i_ggx(vec3 w, const warp_case *c)
-{
-    return smp_ggx_invert(w, c->param);
-}
-static vec3 s_cone(double u1, double u2, const warp_case *c)
-{
-    return smp_uniform_cone_sample(u1, u2, c->param);
-}
-static double p_cone(vec3 w, const warp_case *c)
-{
-    return smp_uniform_cone_pdf(w, c->param);
-}
-static vec2 i_cone(vec3 w, const warp_case *c)
-{
-    return smp_uniform_cone_invert(w, c->param);
-}
+/* Wrappers from the samplers' signatures to warp_case's. */
+WARP_TRIO_PARAM(phong, phong_lobe)
+WARP_TRIO_PARAM(ggx, ggx)
+WARP_TRIO_PARAM(cone, uniform_cone)
 
 #define LOBE_CASE(nm, s, p, inv, prm, scale)                                                       \
     {                                                                                              \
@@ -383,13 +351,6 @@ static double p_ggx_no_cos(vec3 h, const warp_case *c)
     return h.z > 0.0 ? smp_ggx_pdf(h, c->param) / h.z : 0.0;
 }
 
-static bool caught_by_norm(const warp_case *c)
-{
-    double e = warp_norm_error(c);
-    printf("  %s: normalization error %+.4g\n", c->name, e);
-    return !(fabs(e) <= WARP_NORM_TOL);
-}
-
 /* Seed 5006 for the chi-square control. */
 static void test_negative_controls(void **state)
 {
@@ -397,23 +358,21 @@ static void test_negative_controls(void **state)
     warp_case cone = CONE_CASE("negctl-cone-from-theta", 0.8);
     cone.pdf = p_cone_from_theta;
     assert_true(negctl_record(t, "cone pdf from theta (pi theta_max^2)", "normalization",
-                              caught_by_norm(&cone)));
+                              warp_norm_rejects(&cone)));
 
     warp_case phong = LOBE_CASE("negctl-phong-n", s_phong, p_phong_n, NULL, 40.0, 0.22);
     assert_true(negctl_record(t, "Phong lobe normalized with n, not n + 1", "normalization",
-                              caught_by_norm(&phong)));
+                              warp_norm_rejects(&phong)));
 
     warp_case ggx = LOBE_CASE("negctl-ggx-no-cos", s_ggx, p_ggx_no_cos, NULL, 0.5, 0.5);
-    chi2_outcome o = warp_chi2(&ggx, N_CHI2, mc_test_seed(5006u));
-    chi2_spec s = warp_chi2_spec(&ggx);
-    chi2_print(&s, &o);
-    assert_true(negctl_record(t, "GGX without its cos theta_h", "chi-square", o.reject));
+    assert_true(negctl_record(t, "GGX without its cos theta_h", "chi-square",
+                              warp_chi2_rejects(&ggx, N_CHI2, mc_test_seed(5006u))));
 
     quad_view v = make_quad_view();
     v.squared = false;
     warp_case quad = quad_case(&v, "negctl-area-distance-not-squared");
     assert_true(negctl_record(t, "area to solid angle with d instead of d^2", "normalization",
-                              caught_by_norm(&quad)));
+                              warp_norm_rejects(&quad)));
 }
 
 int main(void)

@@ -34,21 +34,9 @@ static vec2 drop3(vec3 p)
 
 /* warp_case wrappers of a planar trio smp_<name>_{sample,pdf,invert}. */
 #define WRAP_PLANAR(tag, name)                                                                     \
-    static vec3 s_##tag(double u1, double u2, const warp_case *c)                                  \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return lift2(smp_##name##_sample(u1, u2));                                                 \
-    }                                                                                              \
-    static double p_##tag(vec3 p, const warp_case *c)                                              \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return smp_##name##_pdf(drop3(p));                                                         \
-    }                                                                                              \
-    static vec2 i_##tag(vec3 p, const warp_case *c)                                                \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return smp_##name##_invert(drop3(p));                                                      \
-    }
+    WARP_WRAP_SAMPLE(s_##tag, lift2(smp_##name##_sample(u1, u2)))                                  \
+    WARP_WRAP_PDF(p_##tag, smp_##name##_pdf(drop3(w)))                                             \
+    WARP_WRAP_INV(i_##tag, smp_##name##_invert(drop3(w)))
 
 WRAP_PLANAR(square, unit_square)
 WRAP_PLANAR(polar, disc_polar)
@@ -264,21 +252,6 @@ static vec3 s_tri_no_sqrt(double u1, double u2, const warp_case *c)
     return vec3_make(1.0 - u1, u2 * u1, 0.0);
 }
 
-static bool caught_by_chi2(const warp_case *c, uint64_t seed)
-{
-    chi2_outcome o = warp_chi2(c, N_CHI2, seed);
-    chi2_spec s = warp_chi2_spec(c);
-    chi2_print(&s, &o);
-    return o.reject;
-}
-
-static bool caught_by_norm(const warp_case *c)
-{
-    double e = warp_norm_error(c);
-    printf("  %s: normalization error %+.4g\n", c->name, e);
-    return !(fabs(e) <= WARP_NORM_TOL);
-}
-
 /* Seed 6002 for the sampled controls. */
 static void test_negative_controls(void **state)
 {
@@ -289,25 +262,25 @@ static void test_negative_controls(void **state)
     disc.sample = s_disc_no_sqrt;
     disc.invert = NULL;
     assert_true(negctl_record(t, "disc radius without the sqrt", "chi-square",
-                              caught_by_chi2(&disc, seed)));
+                              warp_chi2_rejects(&disc, N_CHI2, seed)));
 
     warp_case tri = planar_cases[3];
     tri.name = "negctl-triangle-no-sqrt";
     tri.sample = s_tri_no_sqrt;
     tri.invert = NULL;
     assert_true(negctl_record(t, "triangle without the sqrt", "chi-square",
-                              caught_by_chi2(&tri, seed + 1u)));
+                              warp_chi2_rejects(&tri, N_CHI2, seed + 1u)));
 
     shape3 bad_para = para;
     bad_para.wrong_pdf = true;
     warp_case pc = PARA_CASE("negctl-parallelogram-area-|u||v|", &bad_para);
     assert_true(
-        negctl_record(t, "parallelogram area as |u| |v|", "normalization", caught_by_norm(&pc)));
+        negctl_record(t, "parallelogram area as |u| |v|", "normalization", warp_norm_rejects(&pc)));
 
     shape3 bad_ball = ball;
     bad_ball.wrong_pdf = true;
     warp_case bc = BALL_CASE("negctl-sphere-surface-4-pi-r", &bad_ball);
-    assert_true(negctl_record(t, "sphere area as 4 pi r", "normalization", caught_by_norm(&bc)));
+    assert_true(negctl_record(t, "sphere area as 4 pi r", "normalization", warp_norm_rejects(&bc)));
 }
 
 int main(void)

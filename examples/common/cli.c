@@ -18,6 +18,11 @@ _Noreturn void app_fail(const char *prog, const char *fmt, ...)
     exit(2);
 }
 
+bool app_selected(const char *choice, const char *name)
+{
+    return strcmp(choice, "all") == 0 || strcmp(choice, name) == 0;
+}
+
 bool app_parse_double(const char *s, double *out)
 {
     if (!s || !*s)

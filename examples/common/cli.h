@@ -43,6 +43,14 @@ typedef struct app_opt {
     double min, max;            /* APP_INT, APP_DOUBLE bounds */
 } app_opt;
 
+/* The option-table rows every chapter program shares, in one wording. */
+#define APP_OPT_SEED(dest) {"--seed", APP_SEED, (dest), "random seed (default 1)", NULL, 0, 0}
+#define APP_OPT_CSV(dest) {"--csv", APP_FLAG, (dest), "print CSV instead of a table", NULL, 0, 0}
+
+/* True when `choice`, the value of a --method style option whose choices
+ * end with "all", selects the row `name`: it is "all" or name itself. */
+bool app_selected(const char *choice, const char *name);
+
 /* Parses argv against opts[0..n). Handles --help (prints `usage` and the
  * option list to stdout, exits 0) and --version (exits 0). On any error
  * (unknown option, missing or malformed value, out of range) prints one line

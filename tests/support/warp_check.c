@@ -10,6 +10,7 @@
 
 #include "mc/chi2.h"
 #include "mc/constants.h"
+#include "mc/gof.h"
 #include "samplers/spherical.h"
 #include "tests/support/mc_test.h"
 
@@ -136,6 +137,21 @@ double warp_norm_error(const warp_case *c)
     return chi2_integrate_pdf(&s) - 1.0;
 }
 
+bool warp_norm_rejects(const warp_case *c)
+{
+    double e = warp_norm_error(c);
+    printf("  %s: normalization error %+.4g\n", c->name, e);
+    return !(fabs(e) <= WARP_NORM_TOL);
+}
+
+bool warp_chi2_rejects(const warp_case *c, uint64_t n, uint64_t seed)
+{
+    chi2_outcome o = warp_chi2(c, n, seed);
+    chi2_spec s = warp_chi2_spec(c);
+    chi2_print(&s, &o);
+    return o.reject;
+}
+
 /* --- domain ------------------------------------------------------------- */
 
 /* Support slack: 4 ulps of 1, as in samplers/planar.c. */
@@ -238,27 +254,33 @@ double warp_roundtrip_error(const warp_case *c, int g)
 
 enum { AGREE_NX = 20, AGREE_NY = 40 };
 
+/* Samples of one case mapped into another's parameterization. */
+typedef struct framed {
+    const warp_case *c, *frame;
+} framed;
+
+static void framed_sample(mc_rng *rng, void *ctx, double out[2])
+{
+    const framed *f = ctx;
+    to_param(f->frame, draw(f->c, rng), out);
+}
+
+/* n samples of c histogrammed on a coarse grid of frame's rectangle into
+ * h[0 .. AGREE_NX * AGREE_NY), the samples outside it into h[AGREE_NX *
+ * AGREE_NY]: one more cell of the comparison (the domain check, not this
+ * one, judges the support). */
 static void histogram(const warp_case *c, const warp_case *frame, uint64_t n, mc_rng *rng,
                       double *h)
 {
-    double lo[2], hi[2];
-    rectangle(frame, lo, hi);
-    for (uint64_t k = 0; k < n; k++) {
-        double p[2];
-        to_param(frame, draw(c, rng), p);
-        int i = (int)floor((p[0] - lo[0]) / (hi[0] - lo[0]) * AGREE_NX);
-        int j = (int)floor((p[1] - lo[1]) / (hi[1] - lo[1]) * AGREE_NY);
-        /* Out-of-rectangle samples land in a clamped edge cell: the domain
-         * check, not this one, judges the support. */
-        i = i < 0 ? 0 : (i >= AGREE_NX ? AGREE_NX - 1 : i);
-        j = j < 0 ? 0 : (j >= AGREE_NY ? AGREE_NY - 1 : j);
-        h[i * AGREE_NY + j] += 1.0;
-    }
+    framed f = {c, frame};
+    mc_gof_spec s = {2, {0.0, 0.0}, {0.0, 0.0}, {AGREE_NX, AGREE_NY}, framed_sample, NULL, &f};
+    rectangle(frame, s.lo, s.hi);
+    h[AGREE_NX * AGREE_NY] = mc_gof_histogram(&s, rng, n, h);
 }
 
 warp_agreement warp_compare(const warp_case *a, const warp_case *b, uint64_t n, uint64_t seed)
 {
-    static const int cells = AGREE_NX * AGREE_NY;
+    static const int cells = AGREE_NX * AGREE_NY + 1;
     double *ha = calloc((size_t)cells, sizeof *ha), *hb = calloc((size_t)cells, sizeof *hb);
     warp_agreement r = {0.0, 0, 0.0};
     if (!ha || !hb) {

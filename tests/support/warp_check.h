@@ -73,6 +73,39 @@ struct warp_case {
     const void *extra; /* case-specific data for the custom functions */
 };
 
+/* warp_case adapters of samplers/ functions, defined as static functions
+ * in the test file: WARP_WRAP_SAMPLE(name, expr) gives
+ * vec3 name(u1, u2, c), WARP_WRAP_PDF and WARP_WRAP_INV give double and
+ * vec2 name(w, c); expr may use u1, u2, w and c. WARP_TRIO(tag, stem)
+ * wraps smp_<stem>_{sample,pdf,invert} as s_<tag>, p_<tag>, i_<tag>;
+ * WARP_TRIO_PARAM passes c->param as their last argument. */
+#define WARP_WRAP_SAMPLE(name, expr)                                                               \
+    static vec3 name(double u1, double u2, const warp_case *c)                                     \
+    {                                                                                              \
+        (void)c;                                                                                   \
+        return expr;                                                                               \
+    }
+#define WARP_WRAP_PDF(name, expr)                                                                  \
+    static double name(vec3 w, const warp_case *c)                                                 \
+    {                                                                                              \
+        (void)c;                                                                                   \
+        return expr;                                                                               \
+    }
+#define WARP_WRAP_INV(name, expr)                                                                  \
+    static vec2 name(vec3 w, const warp_case *c)                                                   \
+    {                                                                                              \
+        (void)c;                                                                                   \
+        return expr;                                                                               \
+    }
+#define WARP_TRIO(tag, stem)                                                                       \
+    WARP_WRAP_SAMPLE(s_##tag, smp_##stem##_sample(u1, u2))                                         \
+    WARP_WRAP_PDF(p_##tag, smp_##stem##_pdf(w))                                                    \
+    WARP_WRAP_INV(i_##tag, smp_##stem##_invert(w))
+#define WARP_TRIO_PARAM(tag, stem)                                                                 \
+    WARP_WRAP_SAMPLE(s_##tag, smp_##stem##_sample(u1, u2, c->param))                               \
+    WARP_WRAP_PDF(p_##tag, smp_##stem##_pdf(w, c->param))                                          \
+    WARP_WRAP_INV(i_##tag, smp_##stem##_invert(w, c->param))
+
 /* The chi2_spec of a case (its ctx points to c, which must outlive it). */
 chi2_spec warp_chi2_spec(const warp_case *c);
 
@@ -81,6 +114,14 @@ chi2_outcome warp_chi2(const warp_case *c, uint64_t n, uint64_t seed);
 
 /* The integral of the parameter density over the rectangle, minus 1. */
 double warp_norm_error(const warp_case *c);
+
+/* For negative controls: true when the normalization check rejects c
+ * (|warp_norm_error| > WARP_NORM_TOL); prints the error. */
+bool warp_norm_rejects(const warp_case *c);
+
+/* For negative controls: true when the chi-square test of c (n samples,
+ * seed, chi2_suite_alpha()) rejects; prints the chi2_print line. */
+bool warp_chi2_rejects(const warp_case *c, uint64_t n, uint64_t seed);
 
 /* Result of the domain check. */
 typedef struct warp_domain {
@@ -104,7 +145,8 @@ bool warp_domain_ok(const warp_domain *d);
 double warp_roundtrip_error(const warp_case *c, int g);
 
 /* Two-sample chi-square of a against b: n samples of each histogrammed in
- * a's parameterization on a coarse grid (20 x 40 cells), statistic
+ * a's parameterization on a coarse grid (20 x 40 cells, plus one cell for
+ * samples outside a's rectangle), statistic
  * sum (A - B)^2 / (A + B) over non-empty cells, dof = cells - 1; pooled
  * cells with A + B < 10 are merged. */
 typedef struct warp_agreement {
