@@ -1,0 +1,148 @@
+/* examples/cornell_box.c - the Cornell box of "Ray Tracing: The Rest of Your
+ * Life", rendered with the book's mixture of light and material densities
+ * (chapters 8-10) or any of four other strategies that must agree with it.
+ *
+ * Build: make; run:
+ *   build/bin/cornell_box --scene book --spp 100 -o cornell.png
+ *   build/bin/cornell_box --scene lambert --strategy uniform -o uniform.pfm
+ * Prints the image's mean linear RGB (standard errors from the per-pixel
+ * variances), the paths, ray segments and dropped non-finite samples, and
+ * the time. Ctrl-C writes the image rendered so far and exits with 130.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <errno.h>
+#include <math.h>
+#include <omp.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "examples/common/cli.h"
+#include "render/render.h"
+#include "render/scenes.h"
+
+static const char *const prog = "cornell_box";
+static atomic_int interrupted; /* set by SIGINT, polled by the renderer */
+
+static void on_sigint(int sig)
+{
+    (void)sig;
+    atomic_store(&interrupted, 1);
+}
+
+typedef struct options {
+    const char *scene, *strategy, *gamma, *out;
+    int width, depth, threads;
+    uint64_t spp, seed;
+    bool csv;
+} options;
+
+static options parse(int argc, char **argv)
+{
+    static const char *const strategies[] = {"uniform", "cosine", "light", "mixture", "mis", NULL};
+    static const char *const gammas[] = {"2", "2.2", "srgb", NULL};
+    options o = {"book", "mixture", "2", "cornell.png", 600, 50, 0, 100, 1, false};
+    const app_opt opts[] = {
+        {"--scene", APP_CHOICE, &o.scene, "the scene (book)", rt_scene_names, 0, 0},
+        {"--width", APP_INT, &o.width, "image width and height in pixels (600)", NULL, 1, 65536},
+        {"--spp", APP_COUNT, &o.spp, "samples per pixel (100)", NULL, 0, 0},
+        {"--samples", APP_COUNT, &o.spp, "same as --spp", NULL, 0, 0},
+        {"--max-depth", APP_INT, &o.depth, "most ray segments per path (50)", NULL, 0, 1e6},
+        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (mixture)", strategies, 0, 0},
+        {"--threads", APP_INT, &o.threads, "OpenMP threads, 0 for all (0)", NULL, 0, 4096},
+        {"--seed", APP_SEED, &o.seed, "random seed (1)", NULL, 0, 0},
+        {"-o", APP_STRING, &o.out, "output image .png, .ppm or .pfm (linear) (cornell.png)", NULL, 0, 0},
+        {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (2)", gammas, 0, 0},
+        {"--csv", APP_FLAG, &o.csv, "print the mean linear RGB as CSV", NULL, 0, 0},
+    };
+    app_parse(prog, "cornell_box [--scene S] [--width W] [--spp N] [--max-depth D] "
+                    "[--strategy S] [--threads T] [--seed S] [-o FILE] [--gamma G]",
+              argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+    if (o.spp > UINT64_MAX / ((uint64_t)o.width * (uint64_t)o.width))
+        app_fail(prog, "--spp %llu is too many for a %dx%d image", (unsigned long long)o.spp, o.width,
+                 o.width);
+    return o;
+}
+
+/* The progress line: percent, elapsed, estimated time left, throughput. */
+static void show_progress(void *ctx, const rt_progress *p)
+{
+    double *t = ctx, now = omp_get_wtime(), el = now - t[0];
+    if (now - t[1] < 0.25 && p->paths_done < p->paths_total)
+        return;
+    t[1] = now;
+    double f = (double)p->paths_done / (double)p->paths_total;
+    fprintf(stderr, "\r%s: %5.1f%%  elapsed %.1f s  ETA %.1f s  %.2f Mpaths/s   ", prog, 100.0 * f, el,
+            f > 0.0 ? el * (1.0 - f) / f : 0.0, el > 0.0 ? (double)p->paths_done / el * 1e-6 : 0.0);
+    fflush(stderr);
+}
+
+static void report(const options *o, const rt_image *img, const rt_render_stats *st)
+{
+    mc_estimate rgb[3];
+    rt_image_region_stats(img, 0, 0, img->width, img->height, rgb);
+    app_table t = {stdout, o->csv, NULL, 0};
+    app_table_begin(&t);
+    static const char *const channel[3] = {"mean_linear_r", "mean_linear_g", "mean_linear_b"};
+    for (int c = 0; c < 3; c++)
+        app_table_row(&t, channel[c], rgb[c], (double)NAN, NULL);
+    if (!o->csv)
+        printf("%s %dx%d, %s, max depth %d: %llu paths, %llu ray segments, %llu dropped, %.2f s "
+               "(%.2f Mpaths/s, %.2f Msegments/s); wrote %s\n",
+               o->scene, o->width, o->width, o->strategy, o->depth, (unsigned long long)st->paths,
+               (unsigned long long)st->segments, (unsigned long long)st->dropped, st->seconds,
+               (double)st->paths / st->seconds * 1e-6, (double)st->segments / st->seconds * 1e-6, o->out);
+}
+
+int main(int argc, char **argv)
+{
+    options o = parse(argc, argv);
+    rt_format format = rt_format_from_path(o.out);
+    if (format == RT_FORMAT_UNKNOWN)
+        app_fail(prog, "-o %s: the extension must be .png, .ppm or .pfm", o.out);
+    FILE *f = fopen(o.out, "wb");
+    if (!f)
+        app_fail(prog, "cannot write '%s': %s", o.out, strerror(errno));
+    rt_camera_params cp;
+    rt_scene *scene = rt_scene_named(o.scene, &cp);
+    rt_image *img = rt_image_create(o.width, o.width);
+    if (!scene || !img) {
+        fprintf(stderr, "%s: out of memory\n", prog);
+        return 1;
+    }
+    rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, o.width, o.width));
+    rt_gamma gamma = RT_GAMMA_2;
+    (void)rt_strategy_parse(o.strategy, &job.path.strategy);
+    (void)rt_gamma_parse(o.gamma, &gamma);
+    job.path.max_depth = o.depth;
+    job.spp = o.spp;
+    job.seed = o.seed;
+    job.threads = o.threads;
+    job.cancel = &interrupted;
+    double clock[2] = {omp_get_wtime(), 0.0};
+    bool tty = isatty(fileno(stderr));
+    job.progress = tty ? show_progress : NULL;
+    job.progress_ctx = clock;
+    signal(SIGINT, on_sigint);
+    rt_render_stats st;
+    if (rt_render(&job, img, &st) < 0) {
+        fprintf(stderr, "%s: out of memory\n", prog);
+        return 1;
+    }
+    if (tty)
+        fputc('\n', stderr);
+    if (rt_image_write(img, f, format, gamma) != 0 || fclose(f) != 0) {
+        fprintf(stderr, "%s: error writing '%s'\n", prog, o.out);
+        return 1;
+    }
+    report(&o, img, &st);
+    if (st.cancelled)
+        fprintf(stderr, "%s: interrupted: %s holds %llu samples (%.2f per pixel of the %llu asked)\n",
+                prog, o.out, (unsigned long long)st.paths, (double)st.paths / ((double)o.width * o.width),
+                (unsigned long long)o.spp);
+    rt_image_destroy(img);
+    rt_scene_destroy(scene);
+    return st.cancelled ? 130 : 0;
+}

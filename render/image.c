@@ -1,0 +1,249 @@
+/* render/image.c - pixel accumulation, statistics, gamma, PFM/PNG/PPM. */
+#include "render/image.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <png.h>
+#include <stdlib.h>
+#include <string.h>
+
+rt_image *rt_image_create(int width, int height)
+{
+    if (width < 1 || height < 1)
+        return NULL;
+    rt_image *img = malloc(sizeof *img);
+    rt_pixel *px = calloc((size_t)width * (size_t)height, sizeof *px);
+    if (!img || !px) {
+        free(img);
+        free(px);
+        return NULL;
+    }
+    img->width = width;
+    img->height = height;
+    img->px = px;
+    return img;
+}
+
+void rt_image_destroy(rt_image *img)
+{
+    if (!img)
+        return;
+    free(img->px);
+    free(img);
+}
+
+void rt_image_clear(rt_image *img)
+{
+    memset(img->px, 0, (size_t)img->width * (size_t)img->height * sizeof *img->px);
+}
+
+bool rt_pixel_add(rt_pixel *p, vec3 radiance)
+{
+    if (!vec3_is_finite(radiance)) {
+        p->dropped++;
+        return false;
+    }
+    /* Welford's update per channel: exact mean, stable variance. */
+    double x[3] = {radiance.x, radiance.y, radiance.z};
+    p->n++;
+    double inv_n = 1.0 / (double)p->n;
+    for (int c = 0; c < 3; c++) {
+        double d = x[c] - p->mean[c];
+        p->mean[c] += d * inv_n;
+        p->m2[c] += d * (x[c] - p->mean[c]);
+    }
+    return true;
+}
+
+vec3 rt_image_get(const rt_image *img, int x, int y)
+{
+    const rt_pixel *p = &img->px[(size_t)y * (size_t)img->width + (size_t)x];
+    return vec3_make(p->mean[0], p->mean[1], p->mean[2]);
+}
+
+void rt_image_region_stats(const rt_image *img, int x0, int y0, int x1, int y1, mc_estimate out[3])
+{
+    double sum[3] = {0.0, 0.0, 0.0}, var[3] = {0.0, 0.0, 0.0};
+    uint64_t n = 0, count = 0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            const rt_pixel *p = &img->px[(size_t)y * (size_t)img->width + (size_t)x];
+            n += p->n;
+            count++;
+            for (int c = 0; c < 3; c++) {
+                sum[c] += p->mean[c];
+                /* The variance of a pixel's mean is s^2 / n. */
+                if (p->n >= 2)
+                    var[c] += p->m2[c] / (double)(p->n - 1) / (double)p->n;
+            }
+        }
+    for (int c = 0; c < 3; c++) {
+        double k = count ? (double)count : 1.0;
+        out[c].n = n;
+        out[c].value = sum[c] / k;
+        out[c].std_error = sqrt(var[c]) / k;
+        out[c].variance = out[c].std_error * out[c].std_error * (double)n;
+    }
+}
+
+uint64_t rt_image_dropped(const rt_image *img)
+{
+    uint64_t d = 0;
+    for (size_t i = 0; i < (size_t)img->width * (size_t)img->height; i++)
+        d += img->px[i].dropped;
+    return d;
+}
+
+rt_format rt_format_from_path(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    if (!dot || strchr(dot, '/') || strlen(dot + 1) != 3)
+        return RT_FORMAT_UNKNOWN;
+    char ext[4];
+    for (int i = 0; i < 4; i++)
+        ext[i] = (char)tolower((unsigned char)dot[i + 1]);
+    if (strcmp(ext, "pfm") == 0)
+        return RT_FORMAT_PFM;
+    if (strcmp(ext, "png") == 0)
+        return RT_FORMAT_PNG;
+    if (strcmp(ext, "ppm") == 0)
+        return RT_FORMAT_PPM;
+    return RT_FORMAT_UNKNOWN;
+}
+
+bool rt_gamma_parse(const char *name, rt_gamma *out)
+{
+    if (strcmp(name, "2") == 0)
+        *out = RT_GAMMA_2;
+    else if (strcmp(name, "2.2") == 0)
+        *out = RT_GAMMA_2_2;
+    else if (strcmp(name, "srgb") == 0)
+        *out = RT_GAMMA_SRGB;
+    else
+        return false;
+    return true;
+}
+
+double rt_gamma_encode(double linear, rt_gamma g)
+{
+    if (!(linear > 0.0))
+        return 0.0;
+    switch (g) {
+    case RT_GAMMA_2:
+        return sqrt(linear);
+    case RT_GAMMA_2_2:
+        return pow(linear, 1.0 / 2.2);
+    case RT_GAMMA_SRGB:
+        return linear <= 0.0031308 ? 12.92 * linear : 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
+    }
+    return 0.0;
+}
+
+uint8_t rt_encode_byte(double encoded)
+{
+    double v = encoded > 0.0 ? (encoded < 1.0 ? encoded : 1.0) : 0.0;
+    return (uint8_t)lround(255.0 * v);
+}
+
+/* One row of 8-bit display values. */
+static void encode_row(const rt_image *img, int y, rt_gamma g, unsigned char *row)
+{
+    for (int x = 0; x < img->width; x++) {
+        vec3 c = rt_image_get(img, x, y);
+        row[3 * x] = rt_encode_byte(rt_gamma_encode(c.x, g));
+        row[3 * x + 1] = rt_encode_byte(rt_gamma_encode(c.y, g));
+        row[3 * x + 2] = rt_encode_byte(rt_gamma_encode(c.z, g));
+    }
+}
+
+static int write_ppm(const rt_image *img, FILE *f, rt_gamma g)
+{
+    unsigned char *row = malloc(3 * (size_t)img->width);
+    if (!row)
+        return -1;
+    int ok = fprintf(f, "P6\n%d %d\n255\n", img->width, img->height) > 0;
+    for (int y = 0; y < img->height && ok; y++) {
+        encode_row(img, y, g, row);
+        ok = fwrite(row, 3, (size_t)img->width, f) == (size_t)img->width;
+    }
+    free(row);
+    return ok ? 0 : -1;
+}
+
+static int write_pfm(const rt_image *img, FILE *f)
+{
+    /* The scale's sign gives the byte order: negative for little-endian. */
+    const uint16_t probe = 1;
+    bool little = *(const unsigned char *)&probe == 1;
+    float *row = malloc(3 * sizeof(float) * (size_t)img->width);
+    if (!row)
+        return -1;
+    int ok = fprintf(f, "PF\n%d %d\n%s\n", img->width, img->height, little ? "-1.0" : "1.0") > 0;
+    for (int y = img->height - 1; y >= 0 && ok; y--) {
+        for (int x = 0; x < img->width; x++) {
+            vec3 c = rt_image_get(img, x, y);
+            row[3 * x] = (float)c.x;
+            row[3 * x + 1] = (float)c.y;
+            row[3 * x + 2] = (float)c.z;
+        }
+        ok = fwrite(row, 3 * sizeof(float), (size_t)img->width, f) == (size_t)img->width;
+    }
+    free(row);
+    return ok ? 0 : -1;
+}
+
+/* libpng reports errors by longjmp; nothing this function changes after
+ * setjmp is read after the jump, so no local needs to be volatile. */
+static int write_png(const rt_image *img, FILE *f, unsigned char *rows)
+{
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_infop info = png ? png_create_info_struct(png) : NULL;
+    if (!png || !info) {
+        png_destroy_write_struct(&png, &info);
+        return -1;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return -1;
+    }
+    png_init_io(png, f);
+    png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, 8, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    for (int y = 0; y < img->height; y++)
+        png_write_row(png, rows + 3 * (size_t)img->width * (size_t)y);
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    return 0;
+}
+
+int rt_image_write(const rt_image *img, FILE *f, rt_format format, rt_gamma g)
+{
+    int rc = -1;
+    if (format == RT_FORMAT_PPM) {
+        rc = write_ppm(img, f, g);
+    } else if (format == RT_FORMAT_PFM) {
+        rc = write_pfm(img, f);
+    } else if (format == RT_FORMAT_PNG) {
+        unsigned char *rows = malloc(3 * (size_t)img->width * (size_t)img->height);
+        if (!rows)
+            return -1;
+        for (int y = 0; y < img->height; y++)
+            encode_row(img, y, g, rows + 3 * (size_t)img->width * (size_t)y);
+        rc = write_png(img, f, rows);
+        free(rows);
+    }
+    return rc == 0 && fflush(f) == 0 && !ferror(f) ? 0 : -1;
+}
+
+int rt_image_save(const rt_image *img, const char *path, rt_gamma g)
+{
+    rt_format fmt = rt_format_from_path(path);
+    if (fmt == RT_FORMAT_UNKNOWN)
+        return -1;
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return -1;
+    int rc = rt_image_write(img, f, fmt, g);
+    return fclose(f) == 0 ? rc : -1;
+}

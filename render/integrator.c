@@ -1,0 +1,284 @@
+/* render/integrator.c - the book's mixture path tracer and next-event
+ * estimation with multiple importance sampling. */
+#include "render/integrator.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "mc/constants.h"
+#include "mc/onb.h"
+#include "samplers/hemisphere.h"
+
+static const char *const strategy_names[] = {"uniform", "cosine", "light", "mixture", "mis"};
+
+rt_path_settings rt_path_settings_default(rt_strategy strategy)
+{
+    rt_path_settings ps = {strategy, 50, false, 3, 1.0, false};
+    return ps;
+}
+
+bool rt_strategy_parse(const char *name, rt_strategy *out)
+{
+    for (int i = 0; i < 5; i++)
+        if (strcmp(name, strategy_names[i]) == 0) {
+            *out = (rt_strategy)i;
+            return true;
+        }
+    return false;
+}
+
+const char *rt_strategy_name(rt_strategy s)
+{
+    return (unsigned)s < 5u ? strategy_names[s] : "?";
+}
+
+static bool is_zero(vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
+
+/* Russian roulette after `depth + 1` segments: continue with probability
+ * q = min(0.95, max channel of beta) and divide beta by q, so that the
+ * expected contribution of everything after this point is unchanged
+ * (q (X / q) + (1 - q) 0 = X). Returns false when the path stops. */
+static bool roulette(const rt_path_settings *ps, int depth, vec3 *beta, mc_rng *rng)
+{
+    if (!ps->russian_roulette || depth + 1 < ps->rr_start)
+        return true;
+    double q = fmax(beta->x, fmax(beta->y, beta->z));
+    q = q < 0.95 ? q : 0.95;
+    if (!(q > 0.0) || mc_rng_uniform(rng) >= q)
+        return false;
+    *beta = vec3_scale(*beta, 1.0 / q);
+    return true;
+}
+
+/* --- the densities --------------------------------------------------------
+ * Each helper has two bodies that compute the same numbers: the book's pdf
+ * objects (reference) and render/lights.h (fast). */
+
+static vec3 lights_generate(const rt_scene *s, const rt_path_settings *ps, vec3 p, mc_rng *rng)
+{
+    if (!ps->pdf_objects)
+        return rt_lights_generate(rt_scene_lights(s), rt_scene_light_count(s), p, rng);
+    pdf items[RT_MAX_LIGHTS];
+    const pdf *ptrs[RT_MAX_LIGHTS];
+    pdf lights = rt_scene_lights_pdf(s, p, items, ptrs);
+    return pdf_generate(&lights, rng);
+}
+
+/* The light-list density times the negative-control scale. */
+static double lights_value(const rt_scene *s, const rt_path_settings *ps, vec3 p, vec3 d)
+{
+    double v;
+    if (!ps->pdf_objects) {
+        v = rt_lights_value(rt_scene_lights(s), rt_scene_light_count(s), p, d);
+    } else {
+        pdf items[RT_MAX_LIGHTS];
+        const pdf *ptrs[RT_MAX_LIGHTS];
+        pdf lights = rt_scene_lights_pdf(s, p, items, ptrs);
+        v = pdf_value(&lights, d);
+    }
+    return v * ps->light_pdf_scale;
+}
+
+static vec3 material_generate(const rt_path_settings *ps, const rt_scatter *sr, mc_rng *rng)
+{
+    if (!ps->pdf_objects)
+        return rt_cosine_generate(sr->normal, rng);
+    pdf cosine = rt_scatter_pdf(sr);
+    return pdf_generate(&cosine, rng);
+}
+
+static double material_value(const rt_path_settings *ps, const rt_scatter *sr, vec3 d)
+{
+    if (!ps->pdf_objects)
+        return rt_cosine_value(sr->normal, d);
+    pdf cosine = rt_scatter_pdf(sr);
+    return pdf_value(&cosine, d);
+}
+
+/* The chapter-8 mixture 1/2 lights + 1/2 material: one direction and the
+ * mixture density there (with the negative-control scale on the light
+ * part). The fast body repeats pdf_mixture's choice (component 0 when the
+ * uniform is below its weight) and its sum in component order. */
+static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, const rt_hit *h,
+                             const rt_scatter *sr, mc_rng *rng, vec3 *dir)
+{
+    static const double weights[2] = {0.5, 0.5};
+    if (ps->pdf_objects) {
+        pdf items[RT_MAX_LIGHTS];
+        const pdf *ptrs[RT_MAX_LIGHTS];
+        pdf lights = rt_scene_lights_pdf(s, h->p, items, ptrs), cosine = rt_scatter_pdf(sr);
+        const pdf *comps[2] = {&lights, &cosine};
+        pdf mix = pdf_mixture(comps, weights, 2);
+        *dir = pdf_generate(&mix, rng);
+        double p = pdf_value(&mix, *dir);
+        if (ps->light_pdf_scale != 1.0)
+            p += weights[0] * (ps->light_pdf_scale - 1.0) * pdf_value(&lights, *dir);
+        return p;
+    }
+    *dir = mc_rng_uniform(rng) < weights[0] ? lights_generate(s, ps, h->p, rng)
+                                            : material_generate(ps, sr, rng);
+    double sum = 0.0;
+    sum += weights[0] * lights_value(s, ps, h->p, *dir);
+    sum += weights[1] * material_value(ps, sr, *dir);
+    return sum;
+}
+
+/* --- the book's integrator ---------------------------------------------- */
+
+/* Draws the direction after a diffuse hit and returns the density it was
+ * drawn with (per unit solid angle). */
+static double diffuse_direction(const rt_scene *s, const rt_path_settings *ps, const rt_hit *h,
+                                const rt_scatter *sr, mc_rng *rng, vec3 *dir)
+{
+    if (ps->strategy == RT_UNIFORM) {
+        double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+        onb frame = onb_from_w(h->normal);
+        *dir = onb_to_world(&frame, smp_uniform_hemisphere_sample(u1, u2));
+        return MC_INV_2PI;
+    }
+    if (ps->strategy != RT_MIXTURE || rt_scene_light_count(s) == 0) {
+        *dir = material_generate(ps, sr, rng);
+        return material_value(ps, sr, *dir);
+    }
+    return mixture_sample(s, ps, h, sr, rng, dir);
+}
+
+static vec3 book_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
+                          uint64_t *segments)
+{
+    vec3 L = vec3_make(0.0, 0.0, 0.0), beta = vec3_make(1.0, 1.0, 1.0);
+    for (int depth = 0; depth < ps->max_depth; depth++) {
+        rt_hit h;
+        ++*segments;
+        if (!rt_scene_hit(s, r, HUGE_VAL, &h)) {
+            L = vec3_add(L, vec3_mul(beta, rt_scene_background(s)));
+            break;
+        }
+        const rt_material *m = rt_scene_material(s, h.material);
+        L = vec3_add(L, vec3_mul(beta, rt_material_emitted(m, &h)));
+        rt_scatter sr;
+        if (!rt_material_scatter(m, r, &h, rng, &sr))
+            break;
+        if (sr.specular) {
+            beta = vec3_mul(beta, sr.attenuation);
+            r = sr.ray;
+        } else {
+            vec3 dir;
+            double p = diffuse_direction(s, ps, &h, &sr, rng, &dir);
+            double sp = rt_material_scattering_pdf(m, &h, dir);
+            /* Below the surface the integrand is 0: nothing more to add. */
+            if (!(sp > 0.0))
+                break;
+            beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp / p);
+            r = rt_ray_make(h.p, dir);
+        }
+        if (!roulette(ps, depth, &beta, rng))
+            break;
+    }
+    return L;
+}
+
+/* --- next-event estimation ---------------------------------------------- */
+
+/* Radiance arriving along r straight from a surface or the background,
+ * without scattering: what a shadow ray sees. */
+static vec3 arriving(const rt_scene *s, rt_ray r, uint64_t *segments)
+{
+    rt_hit h;
+    ++*segments;
+    if (!rt_scene_hit(s, r, HUGE_VAL, &h))
+        return rt_scene_background(s);
+    return rt_material_emitted(rt_scene_material(s, h.material), &h);
+}
+
+/* The weight of light found by continuing the path from `from` along dir,
+ * drawn by the material with density p_mat, when the light list could also
+ * have sent a shadow ray there. */
+static double continued_weight(const rt_scene *s, const rt_path_settings *ps, vec3 from, vec3 dir,
+                               double p_mat)
+{
+    if (rt_scene_light_count(s) == 0)
+        return 1.0;
+    double pl = lights_value(s, ps, from, dir);
+    if (ps->strategy == RT_LIGHT)
+        return pl > 0.0 ? 0.0 : 1.0;
+    return p_mat * p_mat / (p_mat * p_mat + pl * pl);
+}
+
+/* The shadow-ray estimate of light arriving at the diffuse hit h directly,
+ * already multiplied by the BRDF cosine and the MIS weight. */
+static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt_material *m,
+                         const rt_hit *h, const rt_scatter *sr, mc_rng *rng, uint64_t *segments)
+{
+    vec3 zero = vec3_make(0.0, 0.0, 0.0);
+    if (rt_scene_light_count(s) == 0)
+        return zero;
+    vec3 dir = lights_generate(s, ps, h->p, rng);
+    double pl = lights_value(s, ps, h->p, dir);
+    double sp = rt_material_scattering_pdf(m, h, dir);
+    if (!(sp > 0.0 && pl > 0.0))
+        return zero;
+    vec3 le = arriving(s, rt_ray_make(h->p, dir), segments);
+    if (is_zero(le))
+        return zero;
+    double w = 1.0;
+    if (ps->strategy == RT_MIS) {
+        double pm = material_value(ps, sr, dir);
+        w = pl * pl / (pl * pl + pm * pm);
+    }
+    return vec3_scale(vec3_mul(sr->attenuation, le), sp * w / pl);
+}
+
+static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
+                         uint64_t *segments)
+{
+    vec3 L = vec3_make(0.0, 0.0, 0.0), beta = vec3_make(1.0, 1.0, 1.0);
+    bool after_diffuse = false;
+    vec3 prev_p = r.origin;
+    double prev_pm = 0.0;
+    for (int depth = 0; depth < ps->max_depth; depth++) {
+        rt_hit h;
+        ++*segments;
+        bool hit = rt_scene_hit(s, r, HUGE_VAL, &h);
+        const rt_material *m = hit ? rt_scene_material(s, h.material) : NULL;
+        vec3 le = hit ? rt_material_emitted(m, &h) : rt_scene_background(s);
+        if (!is_zero(le)) {
+            double w = after_diffuse ? continued_weight(s, ps, prev_p, r.dir, prev_pm) : 1.0;
+            L = vec3_add(L, vec3_scale(vec3_mul(beta, le), w));
+        }
+        rt_scatter sr;
+        if (!hit || !rt_material_scatter(m, r, &h, rng, &sr))
+            break;
+        if (sr.specular) {
+            beta = vec3_mul(beta, sr.attenuation);
+            r = sr.ray;
+            after_diffuse = false;
+        } else {
+            /* A shadow ray from here makes a path one segment longer than
+             * the one that reached here: only within max_depth. */
+            if (depth + 1 < ps->max_depth)
+                L = vec3_add(L, vec3_mul(beta, direct_light(s, ps, m, &h, &sr, rng, segments)));
+            vec3 dir = material_generate(ps, &sr, rng);
+            double pm = material_value(ps, &sr, dir);
+            double sp = rt_material_scattering_pdf(m, &h, dir);
+            if (!(sp > 0.0))
+                break;
+            beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp / pm);
+            prev_p = h.p;
+            prev_pm = pm;
+            after_diffuse = true;
+            r = rt_ray_make(h.p, dir);
+        }
+        if (!roulette(ps, depth, &beta, rng))
+            break;
+    }
+    return L;
+}
+
+vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
+                 uint64_t *segments)
+{
+    if (ps->strategy == RT_LIGHT || ps->strategy == RT_MIS)
+        return nee_radiance(scene, ps, r, rng, segments);
+    return book_radiance(scene, ps, r, rng, segments);
+}

@@ -1,0 +1,74 @@
+/* render/integrator.h - estimators of the radiance arriving along a ray.
+ *
+ * Two integrators, five strategies, one quantity: every strategy estimates
+ * the same sum over paths of at most max_depth ray segments (a segment is
+ * one ray from one surface point to the next hit), so that they must agree
+ * image for image (chapter 4 of "Ray Tracing: The Rest of Your Life": two
+ * strategies that should agree but do not reveal a bug).
+ *
+ * The book's integrator (chapters 4-10): at a diffuse hit one direction is
+ * drawn from a density p and the path continues with weight
+ * albedo * s(direction) / p(direction), emission being collected where the
+ * path lands. Strategies:
+ *   RT_UNIFORM   p = 1 / (2 pi) on the hemisphere (chapter 4's experiment)
+ *   RT_COSINE    p = the material's scattering pdf, cos / pi
+ *   RT_MIXTURE   p = 1/2 light list + 1/2 material pdf (chapters 8 and 10)
+ * The second integrator splits direct from indirect light (the lecture
+ * slides): at each diffuse hit a shadow ray goes toward a point drawn from
+ * the light list, and the path continues by the material pdf:
+ *   RT_LIGHT     the shadow ray carries all light the light list can
+ *                reach; a continued path that lands on such an emitter
+ *                adds nothing (it would count that light twice)
+ *   RT_MIS       both count, weighted by Veach's power heuristic
+ *                w_a = p_a^2 / (p_light^2 + p_material^2)
+ * Specular events (metal, glass) continue with their single ray in all
+ * strategies, and emission reached right after them always counts.
+ * With no lights, RT_MIXTURE, RT_LIGHT and RT_MIS reduce to RT_COSINE.
+ */
+#ifndef RT_INTEGRATOR_H
+#define RT_INTEGRATOR_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "mc/rng.h"
+#include "mc/vec3.h"
+#include "render/ray.h"
+#include "render/scene.h"
+
+typedef enum rt_strategy { RT_UNIFORM, RT_COSINE, RT_LIGHT, RT_MIXTURE, RT_MIS } rt_strategy;
+
+typedef struct rt_path_settings {
+    rt_strategy strategy;
+    int max_depth;         /* most ray segments per path (shadow rays aside), >= 0 */
+    bool russian_roulette; /* terminate low-throughput paths, unbiasedly */
+    int rr_start;          /* roulette begins after this many segments */
+    /* Negative-control hook: the light-list density the estimator divides
+     * by is multiplied by this (1 for a correct renderer); the sampling is
+     * unchanged, so any other value makes the image wrong. */
+    double light_pdf_scale;
+    /* Evaluate the densities with pdf objects built at every bounce, as
+     * the book does (pdf/pdf.h), instead of render/lights.h. Both give the
+     * same numbers; the objects are the reference, the default is faster. */
+    bool pdf_objects;
+} rt_path_settings;
+
+/* Book defaults: the given strategy, max depth 50, no roulette
+ * (rr_start 3 if it is switched on), light_pdf_scale 1, fast densities. */
+rt_path_settings rt_path_settings_default(rt_strategy strategy);
+
+/* The strategy named "uniform", "cosine", "light", "mixture" or "mis";
+ * false for anything else. */
+bool rt_strategy_parse(const char *name, rt_strategy *out);
+
+/* The name of a strategy. */
+const char *rt_strategy_name(rt_strategy s);
+
+/* One sample of the radiance arriving along r (unit direction) at its
+ * origin. May be non-finite if the scene makes it so (the caller drops
+ * such samples). *segments is increased by the number of rays traced,
+ * shadow rays included. */
+vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
+                 uint64_t *segments);
+
+#endif /* RT_INTEGRATOR_H */

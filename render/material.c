@@ -1,0 +1,151 @@
+/* render/material.c - Lambert, metal, glass and light; Snell and Fresnel. */
+#include "render/material.h"
+
+#include <math.h>
+
+#include "mc/constants.h"
+#include "samplers/sphere.h"
+
+rt_material rt_lambertian(vec3 albedo)
+{
+    rt_material m = {.kind = RT_MAT_LAMBERT, .albedo = albedo};
+    return m;
+}
+
+rt_material rt_metal(vec3 albedo, double fuzz)
+{
+    rt_material m = {.kind = RT_MAT_METAL, .albedo = albedo, .fuzz = fuzz < 1.0 ? fuzz : 1.0};
+    return m;
+}
+
+rt_material rt_dielectric(double ior, rt_fresnel fresnel)
+{
+    rt_material m = {.kind = RT_MAT_DIELECTRIC, .albedo = vec3_make(1.0, 1.0, 1.0), .ior = ior,
+                     .fresnel = fresnel};
+    return m;
+}
+
+rt_material rt_diffuse_light(vec3 emission)
+{
+    rt_material m = {.kind = RT_MAT_LIGHT, .emission = emission};
+    return m;
+}
+
+vec3 rt_reflect(vec3 d, vec3 n) { return vec3_madd(d, n, -2.0 * vec3_dot(d, n)); }
+
+bool rt_refract(vec3 d, vec3 n, double eta, vec3 *out)
+{
+    double cos_i = fmin(-vec3_dot(d, n), 1.0);
+    double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2_t > 1.0)
+        return false;
+    /* The tangential part scales by eta (Snell), the normal part is what
+     * is left of a unit vector (Pythagoras). */
+    vec3 perp = vec3_scale(vec3_madd(d, n, cos_i), eta);
+    *out = vec3_madd(perp, n, -sqrt(1.0 - sin2_t));
+    return true;
+}
+
+/* cos theta_t from cos theta_i by Snell's law; -1 under total internal
+ * reflection. */
+static double transmitted_cos(double cos_i, double n1, double n2)
+{
+    double eta = n1 / n2;
+    double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    return sin2_t >= 1.0 ? -1.0 : sqrt(1.0 - sin2_t);
+}
+
+double rt_fresnel_exact(double cos_i, double n1, double n2)
+{
+    double cos_t = transmitted_cos(cos_i, n1, n2);
+    if (cos_t < 0.0)
+        return 1.0;
+    /* Continuity of the tangential fields at the boundary, for the two
+     * polarizations (s: E perpendicular to the plane of incidence). */
+    double rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
+    double rp = (n1 * cos_t - n2 * cos_i) / (n1 * cos_t + n2 * cos_i);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+static double schlick(double r0, double c)
+{
+    double m = 1.0 - c;
+    double m2 = m * m;
+    return r0 + (1.0 - r0) * m2 * m2 * m;
+}
+
+double rt_fresnel_schlick(double cos_i, double n1, double n2)
+{
+    double r0 = (n1 - n2) / (n1 + n2);
+    r0 *= r0;
+    if (n1 <= n2)
+        return schlick(r0, cos_i);
+    double cos_t = transmitted_cos(cos_i, n1, n2);
+    return cos_t < 0.0 ? 1.0 : schlick(r0, cos_t);
+}
+
+double rt_fresnel_schlick_book(double cos_i, double n1, double n2)
+{
+    double r0 = (n1 - n2) / (n1 + n2);
+    r0 *= r0;
+    return transmitted_cos(cos_i, n1, n2) < 0.0 ? 1.0 : schlick(r0, cos_i);
+}
+
+/* Glass: reflect with the probability of the Fresnel reflectance, refract
+ * otherwise. Choosing by that probability makes the weight of either
+ * branch exactly 1 (R / R and T / T). */
+static void scatter_glass(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
+                          rt_scatter *s)
+{
+    double n1 = h->front_face ? 1.0 : m->ior, n2 = h->front_face ? m->ior : 1.0;
+    double cos_i = fmin(-vec3_dot(in.dir, h->normal), 1.0);
+    double r = m->fresnel == RT_FRESNEL_EXACT ? rt_fresnel_exact(cos_i, n1, n2)
+                                              : rt_fresnel_schlick(cos_i, n1, n2);
+    vec3 dir;
+    if (r >= 1.0 || mc_rng_uniform(rng) < r || !rt_refract(in.dir, h->normal, n1 / n2, &dir))
+        dir = rt_reflect(in.dir, h->normal);
+    s->specular = true;
+    s->attenuation = m->albedo;
+    s->ray = rt_ray_make(h->p, vec3_normalize(dir));
+}
+
+bool rt_material_scatter(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
+                         rt_scatter *s)
+{
+    switch (m->kind) {
+    case RT_MAT_LIGHT:
+        return false;
+    case RT_MAT_LAMBERT:
+        s->specular = false;
+        s->attenuation = m->albedo;
+        s->normal = h->normal;
+        return true;
+    case RT_MAT_METAL: {
+        vec3 dir = rt_reflect(in.dir, h->normal);
+        if (m->fuzz > 0.0) {
+            double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+            dir = vec3_add(dir, vec3_scale(smp_uniform_sphere_sample(u1, u2), m->fuzz));
+            /* Fuzz may push the ray under the surface: absorbed, as in
+             * the first book. */
+            if (!(vec3_dot(dir, h->normal) > 0.0))
+                return false;
+        }
+        s->specular = true;
+        s->attenuation = m->albedo;
+        s->ray = rt_ray_make(h->p, vec3_normalize(dir));
+        return true;
+    }
+    case RT_MAT_DIELECTRIC:
+        scatter_glass(m, in, h, rng, s);
+        return true;
+    }
+    return false;
+}
+
+double rt_material_scattering_pdf(const rt_material *m, const rt_hit *h, vec3 d)
+{
+    if (m->kind != RT_MAT_LAMBERT)
+        return 0.0;
+    double c = vec3_dot(h->normal, d);
+    return c > 0.0 ? c * MC_INV_PI : 0.0;
+}

@@ -1,0 +1,116 @@
+/* render/material.h - what happens where a ray meets a surface: emission,
+ * and scattering described by a scatter record.
+ *
+ * Chapter 10 of "Ray Tracing: The Rest of Your Life" ("Cleaning Up pdf
+ * Management"): a material either scatters diffusely, handing the integrator
+ * the pdf object of its scattering density (chapter 3: the Lambertian
+ * scattering pdf is cos(theta) / pi), or specularly, handing it a single
+ * ray with the specular flag set (metal and glass, whose delta densities
+ * are never evaluated). Emission is the diffuse light of chapter 7, which
+ * shines from its front face only. Refraction, total internal reflection,
+ * Schlick's approximation and the exact Fresnel equations follow the notes
+ * on path-tracing mathematics.
+ */
+#ifndef RT_MATERIAL_H
+#define RT_MATERIAL_H
+
+#include <stdbool.h>
+
+#include "mc/rng.h"
+#include "mc/vec3.h"
+#include "pdf/pdf.h"
+#include "render/ray.h"
+
+typedef enum rt_material_kind {
+    RT_MAT_LIGHT,     /* emits, never scatters */
+    RT_MAT_LAMBERT,   /* ideal diffuse: BRDF albedo / pi */
+    RT_MAT_METAL,     /* mirror plus a fuzz sphere */
+    RT_MAT_DIELECTRIC /* glass: reflect or refract by the Fresnel reflectance */
+} rt_material_kind;
+
+typedef enum rt_fresnel {
+    RT_FRESNEL_SCHLICK, /* R0 + (1 - R0)(1 - cos)^5, cos on the rarer side */
+    RT_FRESNEL_EXACT    /* unpolarized (R_s + R_p) / 2 */
+} rt_fresnel;
+
+typedef struct rt_material {
+    rt_material_kind kind;
+    vec3 albedo;        /* Lambert and metal reflectance per channel, in [0, 1] */
+    vec3 emission;      /* radiance emitted from the front face (any kind) */
+    double fuzz;        /* metal: radius of the perturbing sphere, in [0, 1] */
+    double ior;         /* dielectric: index of refraction inside / outside */
+    rt_fresnel fresnel; /* dielectric: which reflectance */
+} rt_material;
+
+/* Ideal diffuse reflector of the given albedo. */
+rt_material rt_lambertian(vec3 albedo);
+/* Metal: mirror direction plus fuzz times a uniform unit vector. */
+rt_material rt_metal(vec3 albedo, double fuzz);
+/* Clear dielectric of index ior (> 0) with the chosen reflectance. */
+rt_material rt_dielectric(double ior, rt_fresnel fresnel);
+/* The diffuse light of chapter 7: radiance `emission` from the front face. */
+rt_material rt_diffuse_light(vec3 emission);
+
+/* The scatter record. For a diffuse event the material's scattering
+ * density is the cosine pdf about `normal` (rt_scatter_pdf builds it as a
+ * pdf object); for a specular one, `ray` is the scattered ray and the
+ * estimator is simply attenuation times what comes back along it. */
+typedef struct rt_scatter {
+    bool specular;
+    vec3 attenuation; /* albedo (diffuse) or the specular colour */
+    rt_ray ray;       /* specular only */
+    vec3 normal;      /* diffuse only: the unit normal facing the incoming ray */
+} rt_scatter;
+
+/* The scattering density of a diffuse record as a pdf object:
+ * pdf_cosine(s->normal), per unit solid angle. */
+static inline pdf rt_scatter_pdf(const rt_scatter *s) { return pdf_cosine(s->normal); }
+
+/* Radiance emitted toward the ray that produced h: m->emission on the
+ * front face, 0 on the back. */
+static inline vec3 rt_material_emitted(const rt_material *m, const rt_hit *h)
+{
+    return h->front_face ? m->emission : vec3_make(0.0, 0.0, 0.0);
+}
+
+/* Fills *s for the ray `in` scattered at h; returns false when the
+ * material absorbs it (a light, or fuzzed metal sent below the surface).
+ * Draws uniforms from rng only for specular events. */
+bool rt_material_scatter(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
+                         rt_scatter *s);
+
+/* The chapter-3 scattering pdf s(direction) of a diffuse material at h for
+ * the unit direction d: max(0, cos theta) / pi with theta measured from the
+ * normal facing the incoming ray (BRDF = albedo s / cos). 0 for specular
+ * materials. */
+double rt_material_scattering_pdf(const rt_material *m, const rt_hit *h, vec3 d);
+
+/* Mirror direction of d about the unit normal n: d - 2 (d . n) n. */
+vec3 rt_reflect(vec3 d, vec3 n);
+
+/* Snell's law for the unit direction d meeting the unit normal n (facing
+ * against d) with eta = n_incident / n_transmitted. Returns false on total
+ * internal reflection (eta sin theta_i > 1); else *out is the unit
+ * refracted direction. */
+bool rt_refract(vec3 d, vec3 n, double eta, vec3 *out);
+
+/* Unpolarized Fresnel reflectance (R_s + R_p) / 2 for light arriving at
+ * cos_i in [0, 1] from the medium of index n1 into the one of index n2;
+ * 1 under total internal reflection. */
+double rt_fresnel_exact(double cos_i, double n1, double n2);
+
+/* Schlick's approximation of the same reflectance. The cosine used is that
+ * on the rarer side of the interface (the incident one when n1 <= n2, the
+ * transmitted one otherwise): the reflectance is symmetric in the two
+ * angles, and only on the rarer side does the approximation hold. The
+ * book's code uses the incident cosine in both directions, which is far off
+ * near total internal reflection (rt_fresnel_schlick_book). 1 under total
+ * internal reflection. */
+double rt_fresnel_schlick(double cos_i, double n1, double n2);
+
+/* The book's variant, for comparison and negative controls:
+ * R0 + (1 - R0)(1 - cos_i)^5 with the incident cosine whichever side it is
+ * on; 1 under total internal reflection. */
+double rt_fresnel_schlick_book(double cos_i, double n1, double n2);
+
+#endif /* RT_MATERIAL_H */

@@ -1,0 +1,180 @@
+/* render/render.c - passes over the image, rows shared by OpenMP threads. */
+#include "render/render.h"
+
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+
+#include "mc/strat.h"
+
+rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera)
+{
+    rt_render_job job = {0};
+    job.scene = scene;
+    job.camera = camera;
+    job.path = rt_path_settings_default(RT_MIXTURE);
+    job.spp = 100;
+    job.seed = 1;
+    return job;
+}
+
+/* The pixel's stratification: mc_strat_grid's sx x sy cells for spp
+ * samples, visited as cell (k stride) mod m for sample k < m. */
+typedef struct jitter {
+    uint64_t sx, sy, m, stride;
+} jitter;
+
+static uint64_t gcd(uint64_t a, uint64_t b)
+{
+    while (b) {
+        uint64_t t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* a b mod m for a, b < m < 2^63, by doubling (no 128-bit product). */
+static uint64_t mulmod(uint64_t a, uint64_t b, uint64_t m)
+{
+    uint64_t r = 0;
+    while (b) {
+        if (b & 1u)
+            r = r + a >= m ? r + a - m : r + a;
+        a = a + a >= m ? a + a - m : a + a;
+        b >>= 1u;
+    }
+    return r;
+}
+
+static jitter jitter_make(uint64_t spp)
+{
+    size_t sx, sy;
+    mc_strat_grid((size_t)spp, &sx, &sy);
+    jitter j = {sx, sy, (uint64_t)sx * sy, 1};
+    /* A stride near m / golden ratio coprime to m is a permutation of the
+     * cells whose prefixes spread over the pixel (the Fibonacci lattice
+     * idea); coprimality makes it visit every cell exactly once. */
+    uint64_t s = (uint64_t)(0.6180339887498949 * (double)j.m);
+    s = s ? s : 1;
+    while (gcd(s, j.m) != 1)
+        s++;
+    j.stride = s % j.m ? s % j.m : 1;
+    return j;
+}
+
+/* A coordinate in [0, 1) from cell i of n and a uniform u. */
+static double in_cell(uint64_t i, uint64_t n, double u)
+{
+    double x = ((double)i + u) / (double)n;
+    return x < 1.0 ? x : nextafter(1.0, 0.0);
+}
+
+/* Samples [k0, k1) of every pixel of row y; c0 is the cell of sample k0. */
+static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
+                       int y, uint64_t k0, uint64_t k1, uint64_t c0, uint64_t *segments,
+                       uint64_t *dropped)
+{
+    int w = img->width;
+    for (int x = 0; x < w; x++) {
+        size_t idx = (size_t)y * (size_t)w + (size_t)x;
+        mc_rng rng = streams[idx];
+        rt_pixel *px = &img->px[idx];
+        uint64_t c = c0;
+        for (uint64_t k = k0; k < k1; k++) {
+            double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng), jx = u1, jy = u2;
+            if (k < jt->m) {
+                jx = in_cell(c % jt->sx, jt->sx, u1);
+                jy = in_cell(c / jt->sx, jt->sy, u2);
+                c = c + jt->stride >= jt->m ? c + jt->stride - jt->m : c + jt->stride;
+            }
+            rt_ray r = rt_camera_ray(&job->camera, (double)x + jx, (double)y + jy);
+            vec3 L = rt_radiance(job->scene, &job->path, r, &rng, segments);
+            if (!rt_pixel_add(px, L))
+                ++*dropped;
+        }
+        streams[idx] = rng;
+    }
+}
+
+typedef struct totals {
+    uint64_t paths, segments, dropped;
+    int cancelled;
+} totals;
+
+/* One pass: samples [k0, k1) of every pixel, rows handed out in order. */
+static void render_pass(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
+                        uint64_t k0, uint64_t k1, totals *tot)
+{
+    uint64_t c0 = k0 < jt->m ? mulmod(k0, jt->stride, jt->m) : 0;
+    int next_row = 0, nt = job->threads > 0 ? job->threads : omp_get_max_threads();
+    uint64_t total = job->spp * (uint64_t)img->width * (uint64_t)img->height;
+#pragma omp parallel num_threads(nt)
+    for (;;) {
+        int y;
+#pragma omp atomic capture
+        y = next_row++;
+        if (y >= img->height)
+            break;
+        if (job->cancel && atomic_load(job->cancel)) {
+#pragma omp atomic write
+            tot->cancelled = 1;
+            break;
+        }
+        uint64_t seg = 0, drop = 0, paths = (k1 - k0) * (uint64_t)img->width;
+        render_row(job, img, streams, jt, y, k0, k1, c0, &seg, &drop);
+#pragma omp atomic
+        tot->segments += seg;
+#pragma omp atomic
+        tot->dropped += drop;
+#pragma omp atomic
+        tot->paths += paths;
+        if (job->progress) {
+#pragma omp critical(rt_render_progress)
+            {
+                rt_progress p = {0, total, 0};
+#pragma omp atomic read
+                p.paths_done = tot->paths;
+#pragma omp atomic read
+                p.segments_done = tot->segments;
+                job->progress(job->progress_ctx, &p);
+            }
+        }
+    }
+}
+
+int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
+{
+    if (!job->scene || job->spp < 1 || job->camera.width != img->width ||
+        job->camera.height != img->height || job->path.max_depth < 0)
+        return -1;
+    size_t npix = (size_t)img->width * (size_t)img->height;
+    mc_rng *streams = malloc(npix * sizeof *streams);
+    if (!streams)
+        return -1;
+    for (size_t i = 0; i < npix; i++)
+        streams[i] = mc_rng_derive(job->seed, (uint64_t)i);
+    rt_image_clear(img);
+    jitter jt = jitter_make(job->spp);
+    /* Passes of at most 16 samples per pixel keep a row short enough for
+     * the cancel flag to be answered within milliseconds. */
+    uint64_t per = job->pass_spp ? job->pass_spp : (job->spp < 16 ? job->spp : 16);
+    uint64_t passes = (job->spp + per - 1) / per, base = job->spp / passes, extra = job->spp % passes;
+    totals tot = {0, 0, 0, 0};
+    double t0 = omp_get_wtime();
+    /* Pass p takes base samples, one more for the first `extra` passes. */
+    for (uint64_t p = 0, k0 = 0; p < passes && !tot.cancelled; p++) {
+        uint64_t k1 = k0 + base + (p < extra ? 1 : 0);
+        render_pass(job, img, streams, &jt, k0, k1, &tot);
+        k0 = k1;
+    }
+    free(streams);
+    if (stats) {
+        stats->paths = tot.paths;
+        stats->segments = tot.segments;
+        stats->dropped = tot.dropped;
+        stats->seconds = omp_get_wtime() - t0;
+        stats->cancelled = tot.cancelled != 0;
+    }
+    return tot.cancelled ? 1 : 0;
+}

@@ -1,0 +1,73 @@
+/* render/render.h - rendering a whole image with OpenMP threads.
+ *
+ * The image loop of every chapter of "Ray Tracing: The Rest of Your Life",
+ * made reproducible and interruptible:
+ * - Pixel samples are jittered (chapter 1's stratification) on the grid of
+ *   mc/strat.h: for spp samples, the largest sx x sy <= spp grid of cells,
+ *   each cell holding one uniform point, then spp - sx sy plain uniform
+ *   points. Every point traced is counted, so sample count and divisor
+ *   agree for any spp (the book traces floor(sqrt(spp))^2 and divides by
+ *   spp). The cells are visited in a scrambled order (a stride coprime to
+ *   the cell count), so that any prefix of a pixel's samples is spread over
+ *   the pixel.
+ * - Each pixel draws from its own stream mc_rng_derive(seed, pixel index),
+ *   and each pixel's samples are added in a fixed order: the image is
+ *   bit-identical for any number of threads.
+ * - The samples are taken in passes over the whole image, so a render
+ *   stopped early (the cancel flag, checked between image rows) still holds
+ *   a complete, evenly sampled picture.
+ * Library code never prints; progress goes to a caller's callback.
+ */
+#ifndef RT_RENDER_H
+#define RT_RENDER_H
+
+#include <stdatomic.h>
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "render/camera.h"
+#include "render/image.h"
+#include "render/integrator.h"
+#include "render/scene.h"
+
+/* How far a render has got. */
+typedef struct rt_progress {
+    uint64_t paths_done, paths_total;
+    uint64_t segments_done;
+} rt_progress;
+
+/* Called after every finished image row of every pass, from whichever
+ * thread finished it, one call at a time. */
+typedef void (*rt_progress_fn)(void *ctx, const rt_progress *p);
+
+typedef struct rt_render_job {
+    const rt_scene *scene; /* built */
+    rt_camera camera;      /* its width and height must equal the image's */
+    rt_path_settings path;
+    uint64_t spp;          /* samples per pixel, >= 1 */
+    uint64_t seed;
+    int threads;           /* 0: OpenMP's default */
+    uint64_t pass_spp;     /* samples per pixel per pass; 0: about 16 */
+    rt_progress_fn progress;
+    void *progress_ctx;
+    const atomic_int *cancel; /* may be NULL; nonzero stops the render */
+} rt_render_job;
+
+typedef struct rt_render_stats {
+    uint64_t paths;    /* samples taken (finite and dropped) */
+    uint64_t segments; /* rays traced, shadow rays included */
+    uint64_t dropped;  /* non-finite samples left out */
+    double seconds;    /* wall time */
+    bool cancelled;    /* stopped by the cancel flag */
+} rt_render_stats;
+
+/* A job with the book's defaults for the scene and camera: strategy
+ * mixture, max depth 50, 100 spp, seed 1, all threads. */
+rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera);
+
+/* Clears img and renders job into it; *stats (may be NULL) receives the
+ * totals. Returns 0 when complete, 1 when cancelled (img then holds
+ * stats->paths samples), -1 on bad arguments or out of memory. */
+int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats);
+
+#endif /* RT_RENDER_H */

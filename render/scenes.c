@@ -1,0 +1,132 @@
+/* render/scenes.c - Cornell box variants and the analytic test scenes. */
+#include "render/scenes.h"
+
+#include <string.h>
+
+#include "mc/constants.h"
+
+const char *const rt_scene_names[] = {"book", "book-metal", "lambert", "furnace", "sphere-light",
+                                      NULL};
+
+static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
+
+int rt_scene_cornell_room(rt_scene *s, rt_camera_params *cam)
+{
+    int red = rt_scene_add_material(s, rt_lambertian(v3(0.65, 0.05, 0.05)));
+    int white = rt_scene_add_material(s, rt_lambertian(v3(0.73, 0.73, 0.73)));
+    int green = rt_scene_add_material(s, rt_lambertian(v3(0.12, 0.45, 0.15)));
+    int light = rt_scene_add_material(s, rt_diffuse_light(v3(15.0, 15.0, 15.0)));
+    rt_scene_add(s, rt_scene_quad(s, v3(555, 0, 0), v3(0, 0, 555), v3(0, 555, 0), green));
+    rt_scene_add(s, rt_scene_quad(s, v3(0, 0, 555), v3(0, 0, -555), v3(0, 555, 0), red));
+    rt_scene_add(s, rt_scene_quad(s, v3(0, 555, 0), v3(555, 0, 0), v3(0, 0, 555), white));
+    rt_scene_add(s, rt_scene_quad(s, v3(0, 0, 555), v3(555, 0, 0), v3(0, 0, -555), white));
+    rt_scene_add(s, rt_scene_quad(s, v3(555, 0, 555), v3(-555, 0, 0), v3(0, 555, 0), white));
+    /* (130, 0, 0) x (0, 0, 105) points to -y: the light faces down. */
+    rt_object lamp = rt_scene_quad(s, v3(213, 554, 227), v3(130, 0, 0), v3(0, 0, 105), light);
+    rt_scene_add(s, lamp);
+    rt_scene_add_light(s, lamp);
+    cam->lookfrom = v3(278, 278, -800);
+    cam->lookat = v3(278, 278, 0);
+    cam->vup = v3(0, 1, 0);
+    cam->vfov_deg = 40.0;
+    return white;
+}
+
+/* A box [0, size] turned about y, then moved. */
+static rt_object placed_box(rt_scene *s, vec3 size, double degrees, vec3 offset, int material)
+{
+    rt_object box = rt_scene_box(s, v3(0, 0, 0), size, material);
+    return rt_scene_translate(s, rt_scene_rotate_y(s, box, degrees), offset);
+}
+
+static rt_scene *cornell(bool metal, bool lambert, rt_camera_params *cam)
+{
+    rt_scene *s = rt_scene_create();
+    if (!s)
+        return NULL;
+    int white = rt_scene_cornell_room(s, cam);
+    int tall = metal ? rt_scene_add_material(s, rt_metal(v3(0.8, 0.85, 0.88), 0.0)) : white;
+    rt_scene_add(s, placed_box(s, v3(165, 330, 165), 15.0, v3(265, 0, 295), tall));
+    if (lambert) {
+        rt_scene_add(s, placed_box(s, v3(165, 165, 165), -18.0, v3(130, 0, 65), white));
+    } else {
+        int glass = rt_scene_add_material(s, rt_dielectric(1.5, RT_FRESNEL_SCHLICK));
+        rt_object ball = rt_scene_sphere(s, v3(190, 90, 190), 90.0, glass);
+        rt_scene_add(s, ball);
+        rt_scene_add_light(s, ball);
+    }
+    if (rt_scene_build(s) != 0) {
+        rt_scene_destroy(s);
+        return NULL;
+    }
+    return s;
+}
+
+rt_scene *rt_scene_furnace(double emission, double rho, rt_camera_params *cam)
+{
+    rt_scene *s = rt_scene_create();
+    if (!s)
+        return NULL;
+    rt_material m = rt_lambertian(v3(rho, rho, rho));
+    m.emission = v3(emission, emission, emission);
+    int mat = rt_scene_add_material(s, m);
+    /* Flipped: the inside is the front face, which emits. */
+    rt_object ball = rt_scene_flip(s, rt_scene_sphere(s, v3(0, 0, 0), 1.0, mat));
+    rt_scene_add(s, ball);
+    rt_scene_add_light(s, ball);
+    /* The room is 555 times smaller than the book's: so is the offset. */
+    rt_scene_set_t_min(s, 1e-6);
+    cam->lookfrom = v3(0, 0, 0);
+    cam->lookat = v3(0, 0, 1);
+    cam->vup = v3(0, 1, 0);
+    cam->vfov_deg = 90.0;
+    if (rt_scene_build(s) != 0) {
+        rt_scene_destroy(s);
+        return NULL;
+    }
+    return s;
+}
+
+rt_scene *rt_scene_sphere_light(double phi, double r, double h, double half, double rho,
+                                rt_camera_params *cam)
+{
+    rt_scene *s = rt_scene_create();
+    if (!s)
+        return NULL;
+    /* Flux of a sphere of uniform radiance L: each point emits pi L per
+     * unit area (the cosine integrated over the hemisphere), so
+     * Phi = 4 pi r^2 pi L. */
+    double radiance = phi / (4.0 * MC_PI * MC_PI * r * r);
+    int floor_mat = rt_scene_add_material(s, rt_lambertian(v3(rho, rho, rho)));
+    int lamp_mat = rt_scene_add_material(s, rt_diffuse_light(v3(radiance, radiance, radiance)));
+    /* (0, 0, 2 half) x (2 half, 0, 0) points to +y: the front faces up. */
+    rt_scene_add(s, rt_scene_quad(s, v3(-half, 0, -half), v3(0, 0, 2 * half), v3(2 * half, 0, 0),
+                                  floor_mat));
+    rt_object lamp = rt_scene_sphere(s, v3(0, h, 0), r, lamp_mat);
+    rt_scene_add(s, lamp);
+    rt_scene_add_light(s, lamp);
+    cam->lookfrom = v3(0, 500, -700);
+    cam->lookat = v3(0, 0, 0);
+    cam->vup = v3(0, 1, 0);
+    cam->vfov_deg = 60.0;
+    if (rt_scene_build(s) != 0) {
+        rt_scene_destroy(s);
+        return NULL;
+    }
+    return s;
+}
+
+rt_scene *rt_scene_named(const char *name, rt_camera_params *cam)
+{
+    if (strcmp(name, "book") == 0)
+        return cornell(false, false, cam);
+    if (strcmp(name, "book-metal") == 0)
+        return cornell(true, false, cam);
+    if (strcmp(name, "lambert") == 0)
+        return cornell(false, true, cam);
+    if (strcmp(name, "furnace") == 0)
+        return rt_scene_furnace(0.5, 0.5, cam);
+    if (strcmp(name, "sphere-light") == 0)
+        return rt_scene_sphere_light(4e5, 20.0, 100.0, 400.0, 0.8, cam);
+    return NULL;
+}

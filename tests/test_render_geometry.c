@@ -1,0 +1,267 @@
+/* tests/test_render_geometry.c - shapes, boxes, instances, the BVH, the
+ * camera: known answers and agreement with brute force. */
+#include "tests/support/mc_test.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "mc/constants.h"
+#include "mc/rng.h"
+#include "render/bvh.h"
+#include "render/camera.h"
+#include "render/scene.h"
+#include "render/scenes.h"
+#include "samplers/sphere.h"
+
+static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
+
+static rt_ray random_ray(mc_rng *rng, vec3 lo, vec3 hi)
+{
+    vec3 o = v3(lo.x + (hi.x - lo.x) * mc_rng_uniform(rng), lo.y + (hi.y - lo.y) * mc_rng_uniform(rng),
+                lo.z + (hi.z - lo.z) * mc_rng_uniform(rng));
+    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    return rt_ray_make(o, smp_uniform_sphere_sample(u1, u2));
+}
+
+/* Known answers: a ray down the middle of a quad, its closed edges, a
+ * parallel ray, a sphere from outside and from inside. */
+static void test_shapes_known_hits(void **state)
+{
+    (void)state;
+    rt_quad q = rt_quad_make(v3(0, 0, 5), v3(2, 0, 0), v3(0, 3, 0));
+    assert_near(rt_quad_t(&q, rt_ray_make(v3(1, 1.5, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
+    /* The corner (a = b = 0) and the far corner (a = b = 1) belong to it. */
+    assert_near(rt_quad_t(&q, rt_ray_make(v3(0, 0, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
+    assert_near(rt_quad_t(&q, rt_ray_make(v3(2, 3, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
+    assert_true(rt_quad_t(&q, rt_ray_make(v3(2.001, 1, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL) == HUGE_VAL);
+    assert_true(rt_quad_t(&q, rt_ray_make(v3(1, 1, 5), v3(1, 0, 0)), 1e-3, HUGE_VAL) == HUGE_VAL);
+    assert_true(rt_quad_t(&q, rt_ray_make(v3(1, 1, 0), v3(0, 0, 1)), 1e-3, 4.0) == HUGE_VAL);
+    assert_near(q.normal.z, 1.0, 1e-15);
+    rt_sphere s = rt_sphere_make(v3(0, 0, 10), 2.0, 1.0);
+    assert_near(rt_sphere_t(&s, rt_ray_make(v3(0, 0, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 8.0, 1e-14);
+    assert_near(rt_sphere_t(&s, rt_ray_make(v3(0, 0, 10), v3(0, 0, 1)), 1e-3, HUGE_VAL), 2.0, 1e-14);
+    assert_true(rt_sphere_t(&s, rt_ray_make(v3(0, 2.5, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL) == HUGE_VAL);
+    /* Leaving the sphere from its surface: the far root. */
+    assert_near(rt_sphere_t(&s, rt_ray_make(v3(0, 0, 8), v3(0, 0, 1)), 1e-3, HUGE_VAL), 4.0, 1e-14);
+}
+
+/* Every face of a box is met on its front face from outside, and the
+ * normal at the hit faces the ray. */
+static void test_box_faces_outward(void **state)
+{
+    (void)state;
+    rt_scene *s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    rt_scene_add(s, rt_scene_box(s, v3(-1, -2, -3), v3(1, 2, 3), m));
+    assert_int_equal(rt_scene_build(s), 0);
+    vec3 dirs[6] = {v3(1, 0, 0), v3(-1, 0, 0), v3(0, 1, 0), v3(0, -1, 0), v3(0, 0, 1), v3(0, 0, -1)};
+    for (int i = 0; i < 6; i++) {
+        rt_hit h;
+        vec3 o = vec3_scale(dirs[i], -10.0);
+        assert_true(rt_scene_hit(s, rt_ray_make(o, dirs[i]), HUGE_VAL, &h));
+        assert_true(h.front_face);
+        assert_true(vec3_dot(h.normal, dirs[i]) < -0.999);
+        /* From inside, every face is met from the back. */
+        assert_true(rt_scene_hit(s, rt_ray_make(v3(0.1, 0.2, 0.3), dirs[i]), HUGE_VAL, &h));
+        assert_false(h.front_face);
+    }
+    rt_scene_destroy(s);
+}
+
+/* rotate_y(+90) takes +x to -z (right-handed), translate adds, flip
+ * swaps the faces. */
+static void test_instances_known(void **state)
+{
+    (void)state;
+    rt_scene *s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    rt_object ball = rt_scene_sphere(s, v3(3, 0, 0), 1.0, m);
+    rt_object moved = rt_scene_translate(s, rt_scene_rotate_y(s, ball, 90.0), v3(0, 5, 0));
+    rt_scene_add(s, rt_scene_flip(s, moved));
+    assert_int_equal(rt_scene_build(s), 0);
+    rt_hit h, t;
+    rt_ray r = rt_ray_make(v3(0, 5, 0), v3(0, 0, -1));
+    assert_true(rt_scene_hit(s, r, HUGE_VAL, &h));
+    assert_near(h.t, 2.0, 1e-12);
+    assert_false(h.front_face); /* flipped: the outside is the back */
+    assert_true(rt_scene_hit_tree(s, r, HUGE_VAL, &t));
+    assert_near(t.t, 2.0, 1e-12);
+    assert_false(t.front_face);
+    rt_scene_destroy(s);
+}
+
+/* Whether p is inside the book scene's tall box (265, 0, 295) + R(15 deg)
+ * [0, 165] x [0, 330] x [0, 165]. */
+static bool in_tall_box(vec3 p)
+{
+    double c = cos(15.0 * MC_PI / 180.0), s = sin(15.0 * MC_PI / 180.0);
+    vec3 d = vec3_sub(p, v3(265, 0, 295));
+    double x = c * d.x - s * d.z, z = s * d.x + c * d.z;
+    return x >= -1 && x <= 166 && d.y >= -1 && d.y <= 331 && z >= -1 && z <= 166;
+}
+
+/* Flattened instances (transforms applied to the shapes once) against the
+ * book's instances (every ray transformed) on the book scene: 10^5 random
+ * rays from inside the room. Rigid motions in double precision differ by a
+ * few ulps, so t and the normal may differ by rounding; a ray within 1e-9
+ * of an edge could in principle flip between the two, which has
+ * probability ~1e-8 per ray: none is expected. Origins inside the tall box
+ * are left out: the box's bottom lies in the floor's plane, and which of
+ * two coplanar faces is "closest" is decided by rounding (the book's scene
+ * has this z-fight; rays from the room never see it). */
+static void test_instances_flattened_match_tree(void **state)
+{
+    (void)state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    assert_non_null(s);
+    mc_rng rng = mc_rng_derive(11u, 0u);
+    int hits = 0;
+    for (int i = 0; i < 100000; i++) {
+        rt_ray r = random_ray(&rng, v3(1, 1, 1), v3(554, 554, 554));
+        if (in_tall_box(r.origin))
+            continue;
+        rt_hit a, b;
+        bool ha = rt_scene_hit(s, r, HUGE_VAL, &a), hb = rt_scene_hit_tree(s, r, HUGE_VAL, &b);
+        assert_int_equal(ha, hb);
+        if (!ha)
+            continue;
+        hits++;
+        assert_near(a.t, b.t, 1e-9 * (1.0 + b.t));
+        assert_int_equal(a.material, b.material);
+        assert_int_equal(a.front_face, b.front_face);
+        assert_true(vec3_length(vec3_sub(a.normal, b.normal)) < 1e-9);
+    }
+    if (hits < 70000)
+        fail_msg("only %d of 10^5 rays hit the scene", hits);
+    rt_scene_destroy(s);
+}
+
+/* BVH closest hits equal brute force exactly (same primitive tests, so
+ * the same t bit for bit; on a tie between primitives at equal t either
+ * may win, so the t's are compared and the indices only when unique). */
+static void check_bvh(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t seed)
+{
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    const rt_prim *prims = rt_scene_prims(s);
+    int n = rt_scene_prim_count(s), hits = 0;
+    for (int i = 0; i < n_rays; i++) {
+        rt_ray r = random_ray(&rng, lo, hi);
+        int ia, ib;
+        double ta = rt_bvh_closest(rt_scene_bvh(s), prims, r, 1e-3, HUGE_VAL, &ia);
+        double tb = rt_prims_closest(prims, n, r, 1e-3, HUGE_VAL, &ib);
+        if (ta != tb || (ia != ib && rt_prim_t(&prims[ia], r, 1e-3, HUGE_VAL) != tb)) {
+            fail_msg("ray %d: BVH t %.17g (prim %d), brute force t %.17g (prim %d)", i, ta, ia, tb, ib);
+        }
+        hits += ia >= 0;
+    }
+    printf("BVH (%d nodes, depth %d) = brute force on %d rays over %d primitives (%d hits)\n",
+           rt_scene_bvh(s)->n_nodes, rt_scene_bvh(s)->depth, n_rays, n, hits);
+    assert_true(hits > n_rays / 10);
+}
+
+/* A soup of 400 random quads and spheres of very different sizes, then the
+ * book scene: 2 x 10^5 + 10^6 rays. */
+static void test_bvh_matches_brute_force(void **state)
+{
+    (void)state;
+    mc_rng rng = mc_rng_derive(12u, 0u);
+    rt_scene *s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    for (int i = 0; i < 400; i++) {
+        vec3 c = v3(100 * mc_rng_uniform(&rng), 100 * mc_rng_uniform(&rng), 100 * mc_rng_uniform(&rng));
+        double size = pow(10.0, -1.0 + 2.5 * mc_rng_uniform(&rng));
+        if (i % 3 == 0) {
+            rt_scene_add(s, rt_scene_sphere(s, c, size, m));
+        } else {
+            vec3 u = vec3_scale(smp_uniform_sphere_sample(mc_rng_uniform(&rng), mc_rng_uniform(&rng)), size);
+            vec3 v = vec3_scale(smp_uniform_sphere_sample(mc_rng_uniform(&rng), mc_rng_uniform(&rng)), size);
+            rt_scene_add(s, rt_scene_quad(s, c, u, v, m));
+        }
+    }
+    assert_int_equal(rt_scene_build(s), 0);
+    const rt_bvh *b = rt_scene_bvh(s);
+    assert_true(b->depth < RT_BVH_MAX_DEPTH);
+    check_bvh(s, 200000, v3(-20, -20, -20), v3(120, 120, 120), 13u);
+    rt_scene_destroy(s);
+
+    rt_camera_params cp;
+    s = rt_scene_named("book", &cp);
+    check_bvh(s, 1000000, v3(-100, -100, -900), v3(655, 655, 655), 14u);
+    rt_scene_destroy(s);
+}
+
+/* Coincident centroids and a long chain of nested boxes must still give a
+ * tree within the fixed traversal stack. */
+static void test_bvh_degenerate_inputs(void **state)
+{
+    (void)state;
+    rt_scene *s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    for (int i = 0; i < 300; i++) /* concentric spheres: one centroid */
+        rt_scene_add(s, rt_scene_sphere(s, v3(1, 2, 3), 1.0 + i, m));
+    for (int i = 0; i < 300; i++) /* geometric sizes: a deep SAH tree */
+        rt_scene_add(s, rt_scene_sphere(s, v3(pow(1.1, i), 0, 0), 1e-3, m));
+    assert_int_equal(rt_scene_build(s), 0);
+    assert_true(rt_scene_bvh(s)->depth < RT_BVH_MAX_DEPTH);
+    check_bvh(s, 20000, v3(-50, -50, -50), v3(50, 50, 50), 15u);
+    rt_scene_destroy(s);
+}
+
+/* The centre of the image looks at lookat; the top edge of the image is
+ * vfov / 2 above the axis; the left edge is to the left (image right is
+ * lookfrom->lookat x up). */
+static void test_camera_geometry(void **state)
+{
+    (void)state;
+    rt_camera_params p = {v3(278, 278, -800), v3(278, 278, 0), v3(0, 1, 0), 40.0};
+    rt_camera c = rt_camera_make(p, 600, 400);
+    rt_ray mid = rt_camera_ray(&c, 300.0, 200.0);
+    assert_near(mid.dir.z, 1.0, 1e-15);
+    rt_ray top = rt_camera_ray(&c, 300.0, 0.0);
+    assert_near(atan2(top.dir.y, top.dir.z), 20.0 * MC_PI / 180.0, 1e-12);
+    rt_ray left = rt_camera_ray(&c, 0.0, 200.0);
+    /* Looking along +z with +y up, the image's right is -x. */
+    assert_true(left.dir.x > 0.0);
+    assert_near(atan2(left.dir.x, left.dir.z), atan(tan(20.0 * MC_PI / 180.0) * 1.5), 1e-12);
+    assert_near(vec3_length(rt_camera_ray(&c, 13.7, 345.1).dir), 1.0, 1e-15);
+}
+
+/* Bad input to the scene builder is reported, not crashed on. */
+static void test_scene_errors(void **state)
+{
+    (void)state;
+    rt_scene *s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    rt_object q = rt_scene_quad(s, v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), m);
+    rt_scene_add(s, q);
+    rt_scene_add_light(s, rt_scene_box(s, v3(0, 0, 0), v3(1, 1, 1), m)); /* six quads */
+    assert_int_equal(rt_scene_build(s), -1);
+    rt_scene_destroy(s);
+    s = rt_scene_create();
+    rt_scene_add(s, rt_scene_quad(s, v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), 7)); /* no material 7 */
+    assert_int_equal(rt_scene_build(s), -1);
+    rt_scene_destroy(s);
+    s = rt_scene_create();
+    assert_int_equal(rt_scene_translate(s, 42, v3(1, 0, 0)), -1);
+    assert_int_equal(rt_scene_build(s), -1);
+    rt_scene_destroy(s);
+    rt_camera_params cp;
+    assert_null(rt_scene_named("no-such-scene", &cp));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_shapes_known_hits),
+        cmocka_unit_test(test_box_faces_outward),
+        cmocka_unit_test(test_instances_known),
+        cmocka_unit_test(test_instances_flattened_match_tree),
+        cmocka_unit_test(test_bvh_matches_brute_force),
+        cmocka_unit_test(test_bvh_degenerate_inputs),
+        cmocka_unit_test(test_camera_geometry),
+        cmocka_unit_test(test_scene_errors),
+    };
+    return cmocka_run_group_tests_name("test_render_geometry", tests, NULL, NULL);
+}

@@ -1,0 +1,279 @@
+/* tests/test_render_image.c - the render loop and the image: determinism
+ * across threads, stratified pixel samples and their count, cancellation,
+ * gamma, and the PFM, PNG and PPM files. */
+#include "tests/support/mc_test.h"
+
+#include <math.h>
+#include <png.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "render/render.h"
+#include "render/scenes.h"
+
+static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
+
+/* The whole file f, read back (malloc'ed, *len bytes). */
+static unsigned char *slurp(FILE *f, long *len)
+{
+    fseek(f, 0, SEEK_END);
+    *len = ftell(f);
+    rewind(f);
+    unsigned char *buf = malloc((size_t)*len + 1);
+    assert_non_null(buf);
+    assert_int_equal(fread(buf, 1, (size_t)*len, f), (size_t)*len);
+    return buf;
+}
+
+static unsigned char *render_pfm(const rt_scene *s, rt_camera_params cp, int threads, long *len)
+{
+    rt_image *img = rt_image_create(24, 24);
+    rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, 24, 24));
+    job.spp = 10;
+    job.threads = threads;
+    job.seed = 7;
+    assert_int_equal(rt_render(&job, img, NULL), 0);
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    assert_int_equal(rt_image_write(img, f, RT_FORMAT_PFM, RT_GAMMA_2), 0);
+    unsigned char *bytes = slurp(f, len);
+    fclose(f);
+    rt_image_destroy(img);
+    return bytes;
+}
+
+/* One thread or two (or three), the same file byte for byte: each pixel
+ * draws from its own stream, whatever thread renders it. */
+static void test_render_identical_for_any_thread_count(void **state)
+{
+    (void)state;
+    static const char *const names[2] = {"book", "lambert"};
+    for (int k = 0; k < 2; k++) {
+        rt_camera_params cp;
+        rt_scene *s = rt_scene_named(names[k], &cp);
+        long l1, l2, l3;
+        unsigned char *a = render_pfm(s, cp, 1, &l1), *b = render_pfm(s, cp, 2, &l2);
+        unsigned char *c = render_pfm(s, cp, 3, &l3);
+        assert_int_equal(l1, l2);
+        assert_int_equal(l1, l3);
+        assert_true(memcmp(a, b, (size_t)l1) == 0);
+        assert_true(memcmp(a, c, (size_t)l1) == 0);
+        free(a);
+        free(b);
+        free(c);
+        rt_scene_destroy(s);
+    }
+}
+
+/* A 1 x 1 image whose pixel is half covered by a light of radiance 1 (the
+ * seam runs down the middle of the pixel). With a perfect-square spp whose
+ * root is even, the jittered grid puts exactly half the samples on each
+ * side: the pixel is exactly 0.5, with no noise at all. For any spp, every
+ * pixel holds exactly spp samples, whatever the pass size. */
+static void test_pixel_samples_stratified_and_counted(void **state)
+{
+    (void)state;
+    rt_scene *s = rt_scene_create();
+    int light = rt_scene_add_material(s, rt_diffuse_light(v3(1, 1, 1)));
+    rt_scene_add(s, rt_scene_quad(s, v3(0, -10, 1), v3(0, 20, 0), v3(10, 0, 0), light));
+    assert_int_equal(rt_scene_build(s), 0);
+    rt_camera_params cp = {v3(0, 0, 0), v3(0, 0, 1), v3(0, 1, 0), 90.0};
+    rt_image *img = rt_image_create(1, 1);
+    static const uint64_t square[4] = {4, 16, 64, 100};
+    for (int i = 0; i < 4; i++) {
+        rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, 1, 1));
+        job.spp = square[i];
+        job.threads = 1;
+        job.pass_spp = 3; /* passes cut the grid anywhere */
+        assert_int_equal(rt_render(&job, img, NULL), 0);
+        assert_int_equal(img->px[0].n, square[i]);
+        assert_near(img->px[0].mean[0], 0.5, 1e-15);
+    }
+    rt_image_destroy(img);
+    rt_scene_destroy(s);
+
+    rt_camera_params bp;
+    s = rt_scene_named("lambert", &bp);
+    img = rt_image_create(5, 3);
+    static const uint64_t any[5] = {1, 2, 7, 10, 33};
+    for (int i = 0; i < 5; i++) {
+        rt_render_job job = rt_render_job_default(s, rt_camera_make(bp, 5, 3));
+        job.spp = any[i];
+        job.pass_spp = (uint64_t)i; /* 0 is the automatic choice */
+        rt_render_stats st;
+        assert_int_equal(rt_render(&job, img, &st), 0);
+        assert_int_equal(st.paths, 15 * any[i]);
+        for (int p = 0; p < 15; p++)
+            assert_int_equal(img->px[p].n + img->px[p].dropped, any[i]);
+    }
+    rt_image_destroy(img);
+    rt_scene_destroy(s);
+}
+
+typedef struct stopper {
+    atomic_int *flag;
+    int calls;
+} stopper;
+
+static void stop_after_two_rows(void *ctx, const rt_progress *p)
+{
+    stopper *st = ctx;
+    assert_true(p->paths_done <= p->paths_total);
+    if (++st->calls == 2)
+        atomic_store(st->flag, 1);
+}
+
+/* Cancelling between rows: the render returns 1, and the statistics count
+ * exactly the samples the image holds. */
+static void test_render_cancel_keeps_exact_count(void **state)
+{
+    (void)state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("lambert", &cp);
+    rt_image *img = rt_image_create(16, 16);
+    atomic_int flag = 0;
+    stopper st = {&flag, 0};
+    rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, 16, 16));
+    job.spp = 40;
+    job.threads = 2;
+    job.cancel = &flag;
+    job.progress = stop_after_two_rows;
+    job.progress_ctx = &st;
+    rt_render_stats stats;
+    assert_int_equal(rt_render(&job, img, &stats), 1);
+    assert_true(stats.cancelled);
+    uint64_t held = 0;
+    for (int i = 0; i < 256; i++)
+        held += img->px[i].n + img->px[i].dropped;
+    assert_int_equal(held, stats.paths);
+    assert_true(stats.paths > 0 && stats.paths < 40 * 256);
+    rt_image_destroy(img);
+    rt_scene_destroy(s);
+}
+
+/* Gamma curves at known points and the byte rounding. */
+static void test_gamma_known_values(void **state)
+{
+    (void)state;
+    assert_near(rt_gamma_encode(0.25, RT_GAMMA_2), 0.5, 1e-15);
+    assert_near(rt_gamma_encode(pow(0.5, 2.2), RT_GAMMA_2_2), 0.5, 1e-15);
+    assert_near(rt_gamma_encode(0.0031308, RT_GAMMA_SRGB), 0.0031308 * 12.92, 1e-15);
+    /* The two pieces of the sRGB curve meet (to 1e-7, the standard's
+     * rounding) at 0.0031308. */
+    assert_near(1.055 * pow(0.0031308, 1.0 / 2.4) - 0.055, 0.0031308 * 12.92, 1e-7);
+    assert_near(rt_gamma_encode(1.0, RT_GAMMA_SRGB), 1.0, 1e-15);
+    assert_near(rt_gamma_encode(-1.0, RT_GAMMA_2), 0.0, 0.0);
+    assert_near(rt_gamma_encode((double)NAN, RT_GAMMA_2), 0.0, 0.0);
+    assert_int_equal(rt_encode_byte(1.7), 255);
+    assert_int_equal(rt_encode_byte(0.5), 128);
+    assert_int_equal(rt_encode_byte(-3.0), 0);
+    rt_gamma g;
+    assert_true(rt_gamma_parse("2.2", &g) && g == RT_GAMMA_2_2);
+    assert_false(rt_gamma_parse("2.4", &g));
+    assert_int_equal(rt_format_from_path("a/b.PNG"), RT_FORMAT_PNG);
+    assert_int_equal(rt_format_from_path("x.pfm"), RT_FORMAT_PFM);
+    assert_int_equal(rt_format_from_path("x.ppm"), RT_FORMAT_PPM);
+    assert_int_equal(rt_format_from_path("x.jpg"), RT_FORMAT_UNKNOWN);
+    assert_int_equal(rt_format_from_path("png"), RT_FORMAT_UNKNOWN);
+    assert_int_equal(rt_format_from_path("dir.png/x"), RT_FORMAT_UNKNOWN);
+}
+
+/* A 3 x 2 image with known pixels. */
+static rt_image *known_image(void)
+{
+    rt_image *img = rt_image_create(3, 2);
+    for (int i = 0; i < 6; i++)
+        rt_pixel_add(&img->px[i], v3(0.01 * i, 0.25, 4.0 * i));
+    return img;
+}
+
+/* PFM: header, bottom-to-top rows of little-endian floats, linear. */
+static void test_write_pfm(void **state)
+{
+    (void)state;
+    rt_image *img = known_image();
+    FILE *f = tmpfile();
+    assert_int_equal(rt_image_write(img, f, RT_FORMAT_PFM, RT_GAMMA_2), 0);
+    long len;
+    unsigned char *b = slurp(f, &len);
+    fclose(f);
+    static const char header[] = "PF\n3 2\n-1.0\n";
+    size_t h = strlen(header);
+    assert_int_equal(len, (long)(h + 6 * 3 * sizeof(float)));
+    assert_true(memcmp(b, header, h) == 0);
+    float px[18];
+    memcpy(px, b + h, sizeof px);
+    /* File row 0 is image row 1 (the bottom one): pixels 3, 4, 5. */
+    for (int i = 0; i < 6; i++) {
+        int src = i < 3 ? 3 + i : i - 3;
+        assert_true(px[3 * i] == (float)(0.01 * src));
+        assert_true(px[3 * i + 1] == 0.25f);
+        assert_true(px[3 * i + 2] == (float)(4.0 * src));
+    }
+    free(b);
+    rt_image_destroy(img);
+}
+
+/* PPM: P6 header, gamma-encoded bytes top to bottom. */
+static void test_write_ppm(void **state)
+{
+    (void)state;
+    rt_image *img = known_image();
+    FILE *f = tmpfile();
+    assert_int_equal(rt_image_write(img, f, RT_FORMAT_PPM, RT_GAMMA_2), 0);
+    long len;
+    unsigned char *b = slurp(f, &len);
+    fclose(f);
+    static const char header[] = "P6\n3 2\n255\n";
+    size_t h = strlen(header);
+    assert_int_equal(len, (long)(h + 18));
+    assert_true(memcmp(b, header, h) == 0);
+    for (int i = 0; i < 6; i++) {
+        assert_int_equal(b[h + 3 * i], rt_encode_byte(sqrt(0.01 * i)));
+        assert_int_equal(b[h + 3 * i + 1], 128); /* sqrt(0.25) = 0.5 */
+        assert_int_equal(b[h + 3 * i + 2], i == 0 ? 0 : 255);
+    }
+    free(b);
+    rt_image_destroy(img);
+}
+
+/* PNG: read back with libpng, 8-bit RGB, the same bytes as the PPM. */
+static void test_write_png(void **state)
+{
+    (void)state;
+    rt_image *img = known_image();
+    char path[512];
+    snprintf(path, sizeof path, "%s/test_render_image.png", mc_test_build_dir());
+    assert_int_equal(rt_image_save(img, path, RT_GAMMA_SRGB), 0);
+    png_image pi;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    assert_true(png_image_begin_read_from_file(&pi, path));
+    assert_int_equal(pi.width, 3);
+    assert_int_equal(pi.height, 2);
+    pi.format = PNG_FORMAT_RGB;
+    unsigned char buf[18];
+    assert_true(png_image_finish_read(&pi, NULL, buf, 0, NULL));
+    for (int i = 0; i < 6; i++)
+        assert_int_equal(buf[3 * i], rt_encode_byte(rt_gamma_encode(0.01 * i, RT_GAMMA_SRGB)));
+    remove(path);
+    assert_int_equal(rt_image_save(img, "/nonexistent-dir/x.png", RT_GAMMA_2), -1);
+    assert_int_equal(rt_image_save(img, "x.tiff", RT_GAMMA_2), -1);
+    rt_image_destroy(img);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_render_identical_for_any_thread_count),
+        cmocka_unit_test(test_pixel_samples_stratified_and_counted),
+        cmocka_unit_test(test_render_cancel_keeps_exact_count),
+        cmocka_unit_test(test_gamma_known_values),
+        cmocka_unit_test(test_write_pfm),
+        cmocka_unit_test(test_write_ppm),
+        cmocka_unit_test(test_write_png),
+    };
+    return cmocka_run_group_tests_name("test_render_image", tests, NULL, NULL);
+}

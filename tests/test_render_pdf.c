@@ -1,0 +1,101 @@
+/* tests/test_render_pdf.c - the renderer's fast densities (render/lights.h)
+ * are the pdf objects of pdf/pdf.h, bit for bit. */
+#include "tests/support/mc_test.h"
+
+#include <string.h>
+
+#include "mc/rng.h"
+#include "pdf/pdf.h"
+#include "render/lights.h"
+#include "render/render.h"
+#include "render/scenes.h"
+#include "samplers/sphere.h"
+
+static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
+
+static bool same_vec(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/* Values and directions for 10^5 random origins (in and around the lights,
+ * inside the glass sphere too) and directions, for the book's light list
+ * and the furnace's (an origin on the light sphere itself). */
+static void check_lights(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
+{
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    const rt_light *fast = rt_scene_lights(s);
+    int n = rt_scene_light_count(s), nonzero = 0;
+    for (int i = 0; i < 100000; i++) {
+        vec3 o = v3(lo.x + (hi.x - lo.x) * mc_rng_uniform(&rng), lo.y + (hi.y - lo.y) * mc_rng_uniform(&rng),
+                    lo.z + (hi.z - lo.z) * mc_rng_uniform(&rng));
+        pdf items[RT_MAX_LIGHTS];
+        const pdf *ptrs[RT_MAX_LIGHTS];
+        pdf list = rt_scene_lights_pdf(s, o, items, ptrs);
+        mc_rng a = rng, b = rng;
+        vec3 da = pdf_generate(&list, &a), db = rt_lights_generate(fast, n, o, &b);
+        assert_true(same_vec(da, db));
+        assert_true(a.state == b.state);
+        rng = a;
+        /* The value at the generated direction and at a random one. */
+        assert_true(pdf_value(&list, da) == rt_lights_value(fast, n, o, da));
+        vec3 d = smp_uniform_sphere_sample(mc_rng_uniform(&rng), mc_rng_uniform(&rng));
+        double va = pdf_value(&list, d);
+        assert_true(va == rt_lights_value(fast, n, o, d));
+        nonzero += va > 0.0;
+        /* The cosine pdf about a random normal. */
+        pdf cosine = pdf_cosine(d);
+        a = rng;
+        b = rng;
+        vec3 ca = pdf_generate(&cosine, &a), cb = rt_cosine_generate(d, &b);
+        assert_true(same_vec(ca, cb) && a.state == b.state);
+        rng = a;
+        assert_true(pdf_value(&cosine, da) == rt_cosine_value(d, da));
+    }
+    assert_true(nonzero > 100);
+}
+
+static void test_lights_match_pdf_objects(void **state)
+{
+    (void)state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    check_lights(s, v3(0, 0, 0), v3(555, 555, 555), 31u);
+    rt_scene_destroy(s);
+    s = rt_scene_furnace(0.5, 0.5, &cp);
+    check_lights(s, v3(-1, -1, -1), v3(1, 1, 1), 32u);
+    rt_scene_destroy(s);
+}
+
+/* Whole images in both modes, every strategy, two scenes: the same bits. */
+static void test_images_match_pdf_objects(void **state)
+{
+    (void)state;
+    static const char *const names[2] = {"book", "lambert"};
+    for (int k = 0; k < 2; k++) {
+        rt_camera_params cp;
+        rt_scene *s = rt_scene_named(names[k], &cp);
+        rt_image *a = rt_image_create(12, 12), *b = rt_image_create(12, 12);
+        for (int st = RT_UNIFORM; st <= RT_MIS; st++) {
+            rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, 12, 12));
+            job.spp = 8;
+            job.threads = 1;
+            job.path.strategy = (rt_strategy)st;
+            assert_int_equal(rt_render(&job, a, NULL), 0);
+            job.path.pdf_objects = true;
+            assert_int_equal(rt_render(&job, b, NULL), 0);
+            if (memcmp(a->px, b->px, 144 * sizeof(rt_pixel)) != 0)
+                fail_msg("%s, %s: pdf objects and fast densities differ", names[k],
+                         rt_strategy_name((rt_strategy)st));
+        }
+        rt_image_destroy(a);
+        rt_image_destroy(b);
+        rt_scene_destroy(s);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_lights_match_pdf_objects),
+        cmocka_unit_test(test_images_match_pdf_objects),
+    };
+    return cmocka_run_group_tests_name("test_render_pdf", tests, NULL, NULL);
+}
