@@ -7,7 +7,8 @@
 # a row with stderr 0 (a zero-variance estimator) is ok only when the
 # estimate equals the exact value within 1e-12 relative; a row without an
 # exact value is "ok (no exact)"; a non-finite estimate or stderr fails.
-# Programs not built yet are skipped with a note.
+# Programs not built yet are skipped with a note. The last step renders
+# the Cornell box (book scene, 32 spp) into $MC_BUILD/cornell_box.png.
 #
 # To add a program: one line in PROGRAMS below, "name [arguments]"; the
 # script appends --csv. Its CSV must have the columns
@@ -28,7 +29,6 @@ PROGRAMS=(
     "sphere_light"
     "projected_area"
     "mixture"
-    # "cornell_box --samples 16"   (to be enabled with its small-render arguments)
 )
 
 build=${MC_BUILD:-build}
@@ -92,6 +92,21 @@ for entry in "${PROGRAMS[@]}"; do
     bad=$(printf '%s\n' "$result" | sed -n 's/^#bad //p')
     failed=$((failed + ${bad:-1}))
 done
+
+# The last step: the book's final Cornell box scene at a modest sample
+# count. It has no exact answer; it must finish and write its image.
+cb="$build/bin/cornell_box"
+if [ -x "$cb" ]; then
+    runs=$((runs + 1))
+    echo
+    echo "cornell_box: the book's final scene, 600x600, 32 samples per pixel"
+    if ! "$cb" --scene book --spp 32 -o "$build/cornell_box.png"; then
+        echo "cornell_box: FAIL"
+        failed=$((failed + 1))
+    fi
+else
+    skipped+=(cornell_box)
+fi
 
 if [ "${#skipped[@]}" -gt 0 ]; then
     echo "not built yet (skipped): ${skipped[*]}"
