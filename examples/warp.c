@@ -174,14 +174,21 @@ static void densities(const warp_entry *e, const warp_state *s)
 static int chi2(const warp_entry *e, const warp_state *s, const args *a)
 {
     warp_gof_ctx ctx = {e, s};
-    mc_gof_spec spec = warp_gof_spec(&ctx);
+    uint64_t n = a->have_n ? a->n : 1000000u;
+    mc_gof_spec spec = warp_gof_spec(&ctx, n);
     int cells = mc_gof_cell_count(&spec);
     double *obs = malloc((size_t)cells * sizeof *obs),
            *expct = malloc((size_t)cells * sizeof *expct);
     if (!obs || !expct)
         app_fail(PROG, "out of memory");
     mc_rng rng = mc_rng_derive(a->seed, 0u);
-    mc_gof_result r = mc_gof_test(&spec, a->have_n ? a->n : 1000000u, &rng, a->alpha, obs, expct);
+    mc_gof_result r = mc_gof_test(&spec, n, &rng, a->alpha, obs, expct);
+    if (r.r.dof < 1) {
+        free(obs);
+        free(expct);
+        app_fail(PROG, "--n %llu is too few samples for a chi-square test of '%s' (no degrees of freedom)",
+                 (unsigned long long)n, a->name);
+    }
     printf("%.6f %d %.6g %s\n", r.r.stat, r.r.dof, r.r.pvalue, r.reject ? "fail" : "pass");
     free(obs);
     free(expct);

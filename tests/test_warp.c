@@ -178,6 +178,30 @@ static void test_warp_chi2(void **state)
     }
 }
 
+/* The histogram follows the sample count: with 1000 samples `warp chi2`
+ * still has degrees of freedom to test with (a grid sized for 10^6 samples
+ * would pool every cell and pass anything), and with 10 samples it refuses
+ * with exit status 2 rather than print a vacuous "pass". */
+static void test_warp_chi2_small_n(void **state)
+{
+    (void)state;
+    static const char *const names[] = {"cosine", "disc-polar", "linear", "quad-light", "mixture"};
+    char args[256], out[256], verdict[16];
+    for (int k = 0; k < 5; k++) {
+        int status, dof;
+        double stat, p;
+        snprintf(args, sizeof args, "chi2 %s --n 1000 --alpha 1e-4 --seed 7", names[k]);
+        warp(args, NULL, out, sizeof out, &status);
+        assert_int_equal(sscanf(out, "%lf %d %lf %15s", &stat, &dof, &p, verdict), 4);
+        if (dof < 3)
+            printf("warp %s: %s", args, out);
+        assert_true(dof >= 3);
+        snprintf(args, sizeof args, "chi2 %s --n 10 --seed 7 2>/dev/null", names[k]);
+        warp(args, NULL, out, sizeof out, &status);
+        assert_int_equal(status, 2);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -185,6 +209,7 @@ int main(void)
         cmocka_unit_test(test_warp_pdf_known_values),
         cmocka_unit_test(test_warp_sample_format),
         cmocka_unit_test(test_warp_chi2),
+        cmocka_unit_test(test_warp_chi2_small_n),
     };
     return cmocka_run_group_tests_name("test_warp", tests, NULL, NULL);
 }

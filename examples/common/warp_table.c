@@ -436,22 +436,49 @@ static double gof_density(const double x[2], void *ctx)
     return 0.0;
 }
 
-mc_gof_spec warp_gof_spec(warp_gof_ctx *ctx)
+/* The smallest divisor k of 30 (so plane-chart cells stay aligned with the
+ * light's edges) for which the 30/k x 30/k cells covering the light, where
+ * the samples fall, keep `per_cell` samples per cell on average. */
+static int plane_divisor(uint64_t n, double per_cell)
+{
+    static const int divisors[] = {1, 2, 3, 5, 6, 10, 15, 30};
+    for (size_t i = 0; i < sizeof divisors / sizeof divisors[0]; i++) {
+        int k = divisors[i];
+        if ((double)n >= per_cell * (30.0 / k) * (30.0 / k))
+            return k;
+    }
+    return 30;
+}
+
+mc_gof_spec warp_gof_spec(warp_gof_ctx *ctx, uint64_t n)
 {
     const warp_entry *e = ctx->e;
     mc_gof_spec spec = {2, {0.0, 0.0}, {1.0, 1.0}, {50, 50}, gof_sample, gof_density, ctx};
+    /* The full resolution suits 10^6 samples. With fewer, coarser cells keep
+     * about WARP_GOF_PER_CELL samples per cell on average; otherwise Pearson
+     * pooling would merge most cells and the test would lose its power. */
+    double scale = fmin(1.0, sqrt((double)n / (WARP_GOF_PER_CELL * 5000.0)));
     if (e->point == WARP_REAL || e->point == WARP_INDEX) {
         bool index = e->point == WARP_INDEX;
         spec.dims = 1;
         spec.hi[0] = index ? (double)ctx->s->p.n_weights : e->hi;
-        spec.cells[0] = index ? (int)ctx->s->p.n_weights : 100;
+        spec.cells[0] = index ? (int)ctx->s->p.n_weights
+                              : (int)fmax(2.0, fmin(100.0, (double)n / WARP_GOF_PER_CELL));
     } else if (e->chart == G_DISC) {
         spec.hi[1] = MC_2PI, spec.cells[1] = 100;
+        spec.cells[0] = (int)fmax(2.0, 50.0 * scale), spec.cells[1] = (int)fmax(2.0, 100.0 * scale);
     } else if (e->chart == G_DIRECTION) {
         pdf_chart_rect(&ctx->s->chart, spec.lo, spec.hi);
-        bool plane = ctx->s->chart.kind == PDF_CHART_LIGHT_PLANE;
-        /* Plane charts: 30 cells per unit, so the light's edges are cell edges. */
-        spec.cells[0] = plane ? 120 : 50, spec.cells[1] = plane ? 90 : 100;
+        if (ctx->s->chart.kind == PDF_CHART_LIGHT_PLANE) {
+            /* Plane charts: 30/k cells per unit, so the light's edges are
+             * cell edges. */
+            int k = plane_divisor(n, WARP_GOF_PER_CELL);
+            spec.cells[0] = 120 / k, spec.cells[1] = 90 / k;
+        } else {
+            spec.cells[0] = (int)fmax(2.0, 50.0 * scale), spec.cells[1] = (int)fmax(2.0, 100.0 * scale);
+        }
+    } else {
+        spec.cells[0] = (int)fmax(2.0, 50.0 * scale), spec.cells[1] = (int)fmax(2.0, 100.0 * scale);
     }
     return spec;
 }

@@ -100,6 +100,9 @@ typedef struct warp_gof_ctx {
     const warp_entry *e;
     const warp_state *s;
 } warp_gof_ctx;
-mc_gof_spec warp_gof_spec(warp_gof_ctx *ctx);
+/* Samples per cell, on average, that the resolution is reduced to keep
+ * when n is small (the full resolution suits 10^6 samples). */
+#define WARP_GOF_PER_CELL 200.0
+mc_gof_spec warp_gof_spec(warp_gof_ctx *ctx, uint64_t n);
 
 #endif /* APP_WARP_TABLE_H */
