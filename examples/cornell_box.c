@@ -36,14 +36,14 @@ typedef struct options {
     const char *scene, *strategy, *gamma, *out;
     int width, depth, threads;
     uint64_t spp, seed;
-    bool csv;
+    bool csv, roulette;
 } options;
 
 static options parse(int argc, char **argv)
 {
     static const char *const strategies[] = {"uniform", "cosine", "light", "mixture", "mis", NULL};
     static const char *const gammas[] = {"2", "2.2", "srgb", NULL};
-    options o = {"book", "mixture", "2", "cornell.png", 600, 50, 0, 100, 1, false};
+    options o = {"book", "mixture", "2", "cornell.png", 600, 50, 0, 100, 1, false, false};
     const app_opt opts[] = {
         {"--scene", APP_CHOICE, &o.scene, "the scene (book)", rt_scene_names, 0, 0},
         {"--width", APP_INT, &o.width, "image width and height in pixels (600)", NULL, 1, 65536},
@@ -56,9 +56,10 @@ static options parse(int argc, char **argv)
         {"-o", APP_STRING, &o.out, "output image .png, .ppm or .pfm (linear) (cornell.png)", NULL, 0, 0},
         {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (2)", gammas, 0, 0},
         {"--csv", APP_FLAG, &o.csv, "print the mean linear RGB as CSV", NULL, 0, 0},
+        {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments (off)", NULL, 0, 0},
     };
     app_parse(prog, "cornell_box [--scene S] [--width W] [--spp N] [--max-depth D] "
-                    "[--strategy S] [--threads T] [--seed S] [-o FILE] [--gamma G]",
+                    "[--strategy S] [--threads T] [--seed S] [-o FILE] [--gamma G] [--roulette]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
     if (o.spp > UINT64_MAX / ((uint64_t)o.width * (uint64_t)o.width))
         app_fail(prog, "--spp %llu is too many for a %dx%d image", (unsigned long long)o.spp, o.width,
@@ -117,6 +118,7 @@ int main(int argc, char **argv)
     (void)rt_strategy_parse(o.strategy, &job.path.strategy);
     (void)rt_gamma_parse(o.gamma, &gamma);
     job.path.max_depth = o.depth;
+    job.path.russian_roulette = o.roulette;
     job.spp = o.spp;
     job.seed = o.seed;
     job.threads = o.threads;

@@ -313,6 +313,25 @@ static inline void packets_closest(const rt_quad_packet *pk, int n_packets, rt_r
     *best = m[k] < *best ? m[k] : *best;
 }
 
+/* Every primitive of leaf nd: its packets of quads, then its spheres. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void leaf_closest(const rt_bvh *bvh, const rt_prim *prims, const rt_bvh_node *nd,
+                                rt_ray r, double tmin, double *best, int *best_i)
+{
+    int n_packets = (nd->n_quads + RT_PACKET - 1) / RT_PACKET;
+    packets_closest(&bvh->packets[nd->packet], n_packets, r, tmin, best, best_i);
+    /* Conditional moves, not branches: which candidate wins is
+     * unpredictable. */
+    for (int i = nd->first + nd->n_quads; i < nd->first + nd->count; i++) {
+        double t = rt_sphere_t(&prims[i].as.sphere, r, tmin, *best);
+        int32_t closer = -(int32_t)(t < *best);
+        *best_i = (closer & i) | (~closer & *best_i);
+        *best = t < *best ? t : *best;
+    }
+}
+
 /* The traversal, inlined below into a baseline copy and, on x86-64, a
  * copy for processors with AVX2 that does a packet's four lanes in one
  * vector instruction. The AVX2 copy is compiled without FMA, so that both
@@ -323,11 +342,21 @@ __attribute__((always_inline))
 static inline double closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double tmin,
                              double tmax, int *index)
 {
+    int best_i = -1;
+    double best = tmax;
+    /* A root that is a leaf (a small scene such as the Cornell box: one
+     * leaf of three packets) is tested straight away, without its box:
+     * the slab test only culls, so skipping it changes no answer, and a
+     * ray inside a closed room always meets the box anyway. */
+    if (bvh->nodes[0].count > 0) {
+        leaf_closest(bvh, prims, &bvh->nodes[0], r, tmin, &best, &best_i);
+        *index = best_i;
+        return best_i >= 0 ? best : HUGE_VAL;
+    }
     vec3 inv = vec3_make(1.0 / r.dir.x, 1.0 / r.dir.y, 1.0 / r.dir.z);
     int neg[3] = {inv.x < 0.0, inv.y < 0.0, inv.z < 0.0};
     int stack[RT_BVH_MAX_DEPTH];
-    int sp = 0, node = 0, best_i = -1;
-    double best = tmax;
+    int sp = 0, node = 0;
     for (;;) {
         const rt_bvh_node *nd = &bvh->nodes[node];
         if (box_hit(nd, r.origin, inv, neg, tmin, best)) {
@@ -343,16 +372,7 @@ static inline double closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, 
                 node = near;
                 continue;
             }
-            int n_packets = (nd->n_quads + RT_PACKET - 1) / RT_PACKET;
-            packets_closest(&bvh->packets[nd->packet], n_packets, r, tmin, &best, &best_i);
-            /* Conditional moves, not branches: which candidate wins is
-             * unpredictable. */
-            for (int i = nd->first + nd->n_quads; i < nd->first + nd->count; i++) {
-                double t = rt_sphere_t(&prims[i].as.sphere, r, tmin, best);
-                int32_t closer = -(int32_t)(t < best);
-                best_i = (closer & i) | (~closer & best_i);
-                best = t < best ? t : best;
-            }
+            leaf_closest(bvh, prims, nd, r, tmin, &best, &best_i);
         }
         if (sp == 0)
             break;
@@ -370,6 +390,51 @@ __attribute__((target("avx2"))) static double closest_avx2(const rt_bvh *bvh, co
     return closest(bvh, prims, r, tmin, tmax, index);
 }
 #endif
+
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline bool hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double tmin,
+                       double tmax, rt_hit *h)
+{
+    int i;
+    double t = closest(bvh, prims, *r, tmin, tmax, &i);
+    if (i < 0)
+        return false;
+    rt_prim_hit_record(&prims[i], i, *r, t, h);
+    return true;
+}
+
+/* The baseline copy, out of line so that the dispatcher below stays a
+ * test and a jump (inlined, its register saves and stack frame would run
+ * before the test on every call). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static bool hit_base(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double tmin,
+                     double tmax, rt_hit *h)
+{
+    return hit(bvh, prims, r, tmin, tmax, h);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) static bool hit_avx2(const rt_bvh *bvh, const rt_prim *prims,
+                                                     const rt_ray *r, double tmin, double tmax,
+                                                     rt_hit *h)
+{
+    return hit(bvh, prims, r, tmin, tmax, h);
+}
+#endif
+
+bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
+                rt_hit *h)
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (__builtin_cpu_supports("avx2"))
+        return hit_avx2(bvh, prims, r, tmin, tmax, h);
+#endif
+    return hit_base(bvh, prims, r, tmin, tmax, h);
+}
 
 double rt_bvh_closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double tmin, double tmax,
                       int *index)

@@ -73,6 +73,12 @@ void rt_bvh_destroy(rt_bvh *bvh);
 double rt_bvh_closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double tmin, double tmax,
                       int *index);
 
+/* rt_bvh_closest followed by the hit record of the closest primitive:
+ * false when r meets nothing in (tmin, tmax), else *h is filled in (the
+ * renderer's query: one call, the ray passed by address). */
+bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
+                rt_hit *h);
+
 /* The same answer by testing every primitive: the reference for the BVH
  * tests. */
 double rt_prims_closest(const rt_prim *prims, int n, rt_ray r, double tmin, double tmax, int *index);

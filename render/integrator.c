@@ -9,6 +9,8 @@
 #include "mc/onb.h"
 #include "samplers/hemisphere.h"
 
+_Static_assert(RT_MAX_LIGHTS <= RT_LIGHTS_AT_MAX, "rt_lights_at holds every light of a scene");
+
 static const char *const strategy_names[] = {"uniform", "cosine", "light", "mixture", "mis"};
 
 rt_path_settings rt_path_settings_default(rt_strategy strategy)
@@ -115,10 +117,14 @@ static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, cons
             p += weights[0] * (ps->light_pdf_scale - 1.0) * pdf_value(&lights, *dir);
         return p;
     }
-    *dir = mc_rng_uniform(rng) < weights[0] ? lights_generate(s, ps, h->p, rng)
+    /* The light densities toward the hit point are prepared once for the
+     * draw and the value (the same expressions: the same bits). */
+    rt_lights_at at;
+    rt_lights_prepare(&at, rt_scene_lights(s), rt_scene_light_count(s), h->p);
+    *dir = mc_rng_uniform(rng) < weights[0] ? rt_lights_at_generate(&at, rng)
                                             : material_generate(ps, sr, rng);
     double sum = 0.0;
-    sum += weights[0] * lights_value(s, ps, h->p, *dir);
+    sum += weights[0] * (rt_lights_at_value(&at, *dir) * ps->light_pdf_scale);
     sum += weights[1] * material_value(ps, sr, *dir);
     return sum;
 }
@@ -172,7 +178,8 @@ static vec3 book_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray 
             beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp / p);
             r = rt_ray_make(h.p, dir);
         }
-        if (!roulette(ps, depth, &beta, rng))
+        /* The flag is tested here too so that, off, the call is skipped. */
+        if (ps->russian_roulette && !roulette(ps, depth, &beta, rng))
             break;
     }
     return L;
@@ -269,7 +276,7 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
             after_diffuse = true;
             r = rt_ray_make(h.p, dir);
         }
-        if (!roulette(ps, depth, &beta, rng))
+        if (ps->russian_roulette && !roulette(ps, depth, &beta, rng))
             break;
     }
     return L;

@@ -17,9 +17,17 @@
 #ifndef RT_LIGHTS_H
 #define RT_LIGHTS_H
 
+#include <math.h>
+
+#include "mc/constants.h"
+#include "mc/onb.h"
 #include "mc/rng.h"
 #include "mc/vec3.h"
 #include "render/shapes.h"
+#include "samplers/cone.h"
+#include "samplers/hemisphere.h"
+#include "samplers/measure.h"
+#include "samplers/planar.h"
 
 /* A light of the light list with its hit-point-independent constants. */
 typedef struct rt_light {
@@ -42,10 +50,120 @@ vec3 rt_lights_generate(const rt_light *lights, int n, vec3 origin, mc_rng *rng)
  * angle, the average over the lights. */
 double rt_lights_value(const rt_light *lights, int n, vec3 origin, vec3 d);
 
+/* Most lights an rt_lights_at holds. */
+#define RT_LIGHTS_AT_MAX 16
+
+/* The light list seen from one origin: the parts of every density that
+ * depend on the origin but not on the direction, computed once per hit
+ * point (the integrators draw a direction and evaluate the density at the
+ * same point) by the very expressions of the functions above, so that the
+ * results are the same bits. */
+typedef struct rt_lights_at {
+    const rt_light *lights;
+    int n;
+    vec3 origin;
+    double num[RT_LIGHTS_AT_MAX];     /* quad: normal . (q - origin) */
+    vec3 axis[RT_LIGHTS_AT_MAX];      /* sphere: unit axis of the cone */
+    double cos_max[RT_LIGHTS_AT_MAX]; /* sphere: cos theta_max */
+    double cone[RT_LIGHTS_AT_MAX];    /* sphere: the cone's density inside it */
+} rt_lights_at;
+
+/* pdf/pdf.c's slack on the parallelogram's edges and on the cone's rim
+ * (see the reasons there); the values must match it. */
+#define RT_LIGHTS_QUAD_EDGE_TOL 1e-9
+#define RT_LIGHTS_CONE_RIM_TOL 1e-15
+
+/* The functions below are inline: the integrators call them at every
+ * diffuse hit, and most of them are a few arithmetic operations. */
+
+/* The cone toward sphere light l from origin: its unit axis and
+ * cos theta_max, as pdf_toward_sphere computes them. */
+static inline vec3 rt_light_cone_axis(const rt_light *l, vec3 origin, double *cos_max)
+{
+    vec3 axis = vec3_sub(l->center, origin);
+    double dist_sq = vec3_length_sq(axis);
+    *cos_max = smp_sphere_cone_cos_theta_max(dist_sq, l->radius);
+    return dist_sq > 0.0 ? vec3_scale(axis, 1.0 / sqrt(dist_sq)) : vec3_make(0.0, 0.0, 1.0);
+}
+
+/* Prepares lights[0..n) (1 <= n <= RT_LIGHTS_AT_MAX) seen from origin. */
+static inline void rt_lights_prepare(rt_lights_at *at, const rt_light *lights, int n, vec3 origin)
+{
+    at->lights = lights;
+    at->n = n;
+    at->origin = origin;
+    for (int i = 0; i < n; i++) {
+        const rt_light *l = &lights[i];
+        if (l->kind == RT_PRIM_QUAD) {
+            at->num[i] = vec3_dot(l->normal, vec3_sub(l->q, origin));
+        } else {
+            at->axis[i] = rt_light_cone_axis(l, origin, &at->cos_max[i]);
+            at->cone[i] = smp_uniform_cone_pdf(vec3_make(0.0, 0.0, 1.0), at->cos_max[i]);
+        }
+    }
+}
+
+/* rt_lights_generate from the prepared origin: the same direction from
+ * the same uniforms. */
+static inline vec3 rt_lights_at_generate(const rt_lights_at *at, mc_rng *rng)
+{
+    uint32_t i = mc_rng_bounded(rng, (uint32_t)at->n);
+    const rt_light *l = &at->lights[i];
+    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    if (l->kind == RT_PRIM_QUAD) {
+        vec3 x = smp_parallelogram_sample(u1, u2, l->q, l->u, l->v);
+        return vec3_normalize(vec3_sub(x, at->origin));
+    }
+    onb frame = onb_from_w(at->axis[i]);
+    return onb_to_world(&frame, smp_uniform_cone_sample(u1, u2, at->cos_max[i]));
+}
+
+/* pdf_toward_quad's value with its numerator normal . (q - origin) given. */
+static inline double rt_light_quad_value(const rt_light *l, vec3 origin, double num, vec3 d)
+{
+    double denom = vec3_dot(l->normal, d);
+    if (denom == 0.0)
+        return 0.0;
+    double r = num / denom;
+    if (!(r > 0.0))
+        return 0.0;
+    vec3 q = vec3_sub(vec3_madd(origin, d, r), l->q);
+    double s = vec3_dot(l->w, vec3_cross(q, l->v));
+    double t = vec3_dot(l->w, vec3_cross(l->u, q));
+    if (!(s >= -RT_LIGHTS_QUAD_EDGE_TOL && s <= 1.0 + RT_LIGHTS_QUAD_EDGE_TOL &&
+          t >= -RT_LIGHTS_QUAD_EDGE_TOL && t <= 1.0 + RT_LIGHTS_QUAD_EDGE_TOL))
+        return 0.0;
+    return smp_area_to_solid_angle(l->inv_area, r * r, denom);
+}
+
+/* rt_lights_value from the prepared origin: the same value. */
+static inline double rt_lights_at_value(const rt_lights_at *at, vec3 d)
+{
+    double sum = 0.0;
+    for (int i = 0; i < at->n; i++) {
+        const rt_light *l = &at->lights[i];
+        /* pdf_toward_sphere's value: smp_uniform_cone_pdf of the direction
+         * in the cone's frame, whose z is d . axis. */
+        sum += l->kind == RT_PRIM_QUAD ? rt_light_quad_value(l, at->origin, at->num[i], d)
+               : vec3_dot(d, at->axis[i]) < at->cos_max[i] - RT_LIGHTS_CONE_RIM_TOL ? 0.0
+                                                                                     : at->cone[i];
+    }
+    return at->n > 0 ? sum / (double)at->n : 0.0;
+}
+
 /* pdf_generate of pdf_cosine(normal) (unit normal). */
-vec3 rt_cosine_generate(vec3 normal, mc_rng *rng);
+static inline vec3 rt_cosine_generate(vec3 normal, mc_rng *rng)
+{
+    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    onb frame = onb_from_w(normal);
+    return onb_to_world(&frame, smp_cosine_hemisphere_sample(u1, u2));
+}
 
 /* pdf_value of pdf_cosine(normal): max(0, cos theta) / pi. */
-double rt_cosine_value(vec3 normal, vec3 d);
+static inline double rt_cosine_value(vec3 normal, vec3 d)
+{
+    double cos_theta = vec3_dot(d, normal);
+    return cos_theta > 0.0 ? cos_theta * MC_INV_PI : 0.0;
+}
 
 #endif /* RT_LIGHTS_H */

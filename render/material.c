@@ -35,7 +35,10 @@ vec3 rt_reflect(vec3 d, vec3 n) { return vec3_madd(d, n, -2.0 * vec3_dot(d, n));
 
 bool rt_refract(vec3 d, vec3 n, double eta, vec3 *out)
 {
-    double cos_i = fmin(-vec3_dot(d, n), 1.0);
+    double cos_i = -vec3_dot(d, n);
+    /* fmin(cos_i, 1) without the libm call that -O2 makes of fmin: the
+     * same result for every input (NaN gives 1 both ways). */
+    cos_i = cos_i < 1.0 ? cos_i : 1.0;
     double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
     if (sin2_t > 1.0)
         return false;
@@ -98,7 +101,8 @@ static void scatter_glass(const rt_material *m, rt_ray in, const rt_hit *h, mc_r
                           rt_scatter *s)
 {
     double n1 = h->front_face ? 1.0 : m->ior, n2 = h->front_face ? m->ior : 1.0;
-    double cos_i = fmin(-vec3_dot(in.dir, h->normal), 1.0);
+    double cos_i = -vec3_dot(in.dir, h->normal);
+    cos_i = cos_i < 1.0 ? cos_i : 1.0; /* fmin, as in rt_refract */
     double r = m->fresnel == RT_FRESNEL_EXACT ? rt_fresnel_exact(cos_i, n1, n2)
                                               : rt_fresnel_schlick(cos_i, n1, n2);
     vec3 dir;
@@ -140,12 +144,4 @@ bool rt_material_scatter(const rt_material *m, rt_ray in, const rt_hit *h, mc_rn
         return true;
     }
     return false;
-}
-
-double rt_material_scattering_pdf(const rt_material *m, const rt_hit *h, vec3 d)
-{
-    if (m->kind != RT_MAT_LAMBERT)
-        return 0.0;
-    double c = vec3_dot(h->normal, d);
-    return c > 0.0 ? c * MC_INV_PI : 0.0;
 }

@@ -16,6 +16,7 @@
 
 #include <stdbool.h>
 
+#include "mc/constants.h"
 #include "mc/rng.h"
 #include "mc/vec3.h"
 #include "pdf/pdf.h"
@@ -83,7 +84,13 @@ bool rt_material_scatter(const rt_material *m, rt_ray in, const rt_hit *h, mc_rn
  * the unit direction d: max(0, cos theta) / pi with theta measured from the
  * normal facing the incoming ray (BRDF = albedo s / cos). 0 for specular
  * materials. */
-double rt_material_scattering_pdf(const rt_material *m, const rt_hit *h, vec3 d);
+static inline double rt_material_scattering_pdf(const rt_material *m, const rt_hit *h, vec3 d)
+{
+    if (m->kind != RT_MAT_LAMBERT)
+        return 0.0;
+    double c = vec3_dot(h->normal, d);
+    return c > 0.0 ? c * MC_INV_PI : 0.0;
+}
 
 /* Mirror direction of d about the unit normal n: d - 2 (d . n) n. */
 vec3 rt_reflect(vec3 d, vec3 n);

@@ -313,12 +313,7 @@ int rt_scene_build(rt_scene *s)
 
 bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
 {
-    int i;
-    double t = rt_bvh_closest(&s->bvh, s->prims, r, s->t_min, tmax, &i);
-    if (i < 0)
-        return false;
-    rt_prim_hit_record(&s->prims[i], i, r, t, h);
-    return true;
+    return rt_bvh_hit(&s->bvh, s->prims, &r, s->t_min, tmax, h);
 }
 
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)

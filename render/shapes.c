@@ -25,35 +25,6 @@ rt_sphere rt_sphere_make(vec3 center, double radius, double orient)
     return s;
 }
 
-/* The book's set_face_normal: keep which side was hit, then turn the
- * normal against the ray so that scattering code never has to. */
-static void set_face(rt_hit *h, vec3 dir, vec3 outward)
-{
-    h->front_face = vec3_dot(dir, outward) < 0.0;
-    h->normal = h->front_face ? outward : vec3_neg(outward);
-}
-
-void rt_prim_hit_record(const rt_prim *p, int index, rt_ray r, double t, rt_hit *h)
-{
-    h->t = t;
-    h->p = rt_ray_at(r, t);
-    h->material = p->material;
-    h->prim = index;
-    if (p->kind == RT_PRIM_QUAD) {
-        set_face(h, r.dir, p->as.quad.normal);
-    } else {
-        /* Normalized, not divided by the radius: the hit point is off the
-         * sphere by rounding, a normal off unit length by e gives scattered
-         * directions off by e, and the next hit along a non-unit direction
-         * is off the sphere by a few e: inside a sphere (the furnace, a
-         * glass ball) the error doubles at every bounce until, some 25
-         * bounces later, a ray meets the surface it starts on. */
-        const rt_sphere *s = &p->as.sphere;
-        vec3 outward = vec3_scale(vec3_normalize(vec3_sub(h->p, s->center)), s->orient);
-        set_face(h, r.dir, outward);
-    }
-}
-
 /* Widens b by the padding on every side. Flat boxes need it (the slab
  * test of a zero-width slab is 0 * inf when the ray runs inside the plane),
  * and a hit that the closed edge test accepts may lie a rounding error

@@ -98,8 +98,36 @@ static inline double rt_prim_t(const rt_prim *p, rt_ray r, double tmin, double t
                                    : rt_sphere_t(&p->as.sphere, r, tmin, tmax);
 }
 
-/* The full hit record of primitive p (index `index`) at distance t along r. */
-void rt_prim_hit_record(const rt_prim *p, int index, rt_ray r, double t, rt_hit *h);
+/* The book's set_face_normal: keep which side was hit, then turn the
+ * normal against the ray so that scattering code never has to. */
+static inline void rt_hit_set_face(rt_hit *h, vec3 dir, vec3 outward)
+{
+    h->front_face = vec3_dot(dir, outward) < 0.0;
+    h->normal = h->front_face ? outward : vec3_neg(outward);
+}
+
+/* The full hit record of primitive p (index `index`) at distance t along
+ * r. Inline: it follows every closest-hit query. */
+static inline void rt_prim_hit_record(const rt_prim *p, int index, rt_ray r, double t, rt_hit *h)
+{
+    h->t = t;
+    h->p = rt_ray_at(r, t);
+    h->material = p->material;
+    h->prim = index;
+    if (p->kind == RT_PRIM_QUAD) {
+        rt_hit_set_face(h, r.dir, p->as.quad.normal);
+    } else {
+        /* Normalized, not divided by the radius: the hit point is off the
+         * sphere by rounding, a normal off unit length by e gives scattered
+         * directions off by e, and the next hit along a non-unit direction
+         * is off the sphere by a few e: inside a sphere (the furnace, a
+         * glass ball) the error doubles at every bounce until, some 25
+         * bounces later, a ray meets the surface it starts on. */
+        const rt_sphere *s = &p->as.sphere;
+        vec3 outward = vec3_scale(vec3_normalize(vec3_sub(h->p, s->center)), s->orient);
+        rt_hit_set_face(h, r.dir, outward);
+    }
+}
 
 /* The bounding box of a primitive, padded on every side by RT_BOX_PAD
  * times the size of its coordinates (quads are flat; see shapes.c). */
