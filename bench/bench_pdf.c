@@ -65,7 +65,7 @@ int main(int argc, char **argv)
         {"--seed", APP_SEED, &seed, "seed of the uniform streams (default 2385)", NULL, 0, 0},
     };
     app_parse("bench_pdf",
-              "usage: bench_pdf [--samples N] [--seed S]\n"
+              "bench_pdf [--samples N] [--seed S]\n"
               "  nanoseconds per generate() and value() of every pdf object (median of 5 runs)",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
 

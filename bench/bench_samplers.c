@@ -142,7 +142,7 @@ int main(int argc, char **argv)
         {"--seed", APP_SEED, &seed, "seed of the uniform streams (default 2385)", NULL, 0, 0},
     };
     app_parse("bench_samplers",
-              "usage: bench_samplers [--samples N] [--seed S]\n"
+              "bench_samplers [--samples N] [--seed S]\n"
               "  nanoseconds per sample of every sampler (median of 5 runs)",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
     printf("%-26s %s\n", "sampler", "ns_per_sample");
