@@ -32,6 +32,16 @@ endif
 ifeq ($(NATIVE),1)
 MODE += -march=native
 endif
+# Link-time optimization for gcc builds (not clang, not the sanitizer build):
+# the renderer's hot path crosses the render/pdf/samplers/mc archives, and
+# only LTO lets gcc inline across them (bench_render: about 15% faster, same
+# image). Archives of LTO objects need gcc-ar, which passes the LTO plugin.
+cc_is_gcc := $(shell $(CC) -v 2>&1 | grep -q '^gcc version' && echo 1)
+AR := ar
+ifeq ($(cc_is_gcc)$(SAN),10)
+MODE += -flto=auto
+AR := gcc-ar
+endif
 ALL_CFLAGS = -std=c17 $(WARN) -I. -fopenmp $(MODE) -MMD -MP $(CFLAGS)
 ALL_LDFLAGS = -fopenmp $(MODE) $(LDFLAGS)
 # Debian's library names; no pkg-config at parse time, because `make deps`
@@ -129,19 +139,19 @@ define layer_rule
 $(B)/lib/lib$(1).a: $(call lib_objs,$(1))
 	@mkdir -p $$(@D)
 	rm -f $$@
-	$$(if $$^,ar rcs $$@ $$^,ar rcs $$@)
+	$$(if $$^,$(AR) rcs $$@ $$^,$(AR) rcs $$@)
 endef
 $(foreach l,$(LAYERS),$(eval $(call layer_rule,$(l))))
 
 $(APP_LIB): $(patsubst %.c,$(B)/obj/%.o,$(APP_SRCS))
 	@mkdir -p $(@D)
 	rm -f $@
-	ar rcs $@ $^
+	$(AR) rcs $@ $^
 
 $(SUPPORT_LIB): $(patsubst %.c,$(B)/obj/%.o,$(SUPPORT_SRCS))
 	@mkdir -p $(@D)
 	rm -f $@
-	ar rcs $@ $^
+	$(AR) rcs $@ $^
 
 # Link order is the layer order: a wrong-way call is an undefined symbol.
 LINK_LAYERS := $(foreach l,$(LAYERS),$(B)/lib/lib$(l).a)
