@@ -11,7 +11,7 @@ vec3 smp_uniform_cone_sample(double u1, double u2, double cos_theta_max)
     /* The cap above cos theta_max has solid angle 2 pi (1 - cos theta_max),
      * linear in cos theta: cos theta is uniform on [cos theta_max, 1]. */
     double z = 1.0 - u2 * (1.0 - cos_theta_max);
-    return smp_spherical_direction(z, MC_2PI * u1);
+    return smp_spherical_direction_turn(z, u1);
 }
 
 double smp_uniform_cone_pdf(vec3 w, double cos_theta_max)

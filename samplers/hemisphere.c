@@ -18,7 +18,7 @@ vec3 smp_uniform_hemisphere_sample(double u1, double u2)
 {
     /* cos theta uniform on (0, 1]: 1 - u2 keeps u2 = 0 at the pole and never
      * reaches the rim. */
-    return smp_spherical_direction(1.0 - u2, MC_2PI * u1);
+    return smp_spherical_direction_turn(1.0 - u2, u1);
 }
 
 double smp_uniform_hemisphere_pdf(vec3 w)
@@ -42,7 +42,7 @@ vec3 smp_cosine_hemisphere_sample(double u1, double u2)
 {
     /* The marginal of z = cos theta is 2 pi (z / pi) = 2 z on [0, 1]; its
      * CDF z^2 = 1 - u2 (1 - u2 rather than u2 keeps z > 0). */
-    return smp_spherical_direction(sqrt(1.0 - u2), MC_2PI * u1);
+    return smp_spherical_direction_turn(sqrt(1.0 - u2), u1);
 }
 
 /* Lifts a point of the unit disc straight up onto the hemisphere. */
@@ -64,7 +64,7 @@ vec3 smp_cosine_hemisphere_sample_acos(double u1, double u2)
     /* The marginal of theta is 2 cos sin = sin 2 theta with CDF
      * (1 - cos 2 theta) / 2 = u2. */
     double theta = 0.5 * acos(1.0 - 2.0 * u2);
-    return smp_spherical_direction(cos(theta), MC_2PI * u1);
+    return smp_spherical_direction_turn(cos(theta), u1);
 }
 
 double smp_cosine_hemisphere_pdf(vec3 w)

@@ -15,7 +15,7 @@ vec3 smp_phong_lobe_sample(double u1, double u2, double n)
     /* In z = cos theta the marginal is (n+1) z^n on [0, 1], CDF z^(n+1);
      * solving z^(n+1) = 1 - u2 keeps z > 0 for u2 < 1. */
     double z = pow(1.0 - u2, 1.0 / (n + 1.0));
-    return smp_spherical_direction(z, MC_2PI * u1);
+    return smp_spherical_direction_turn(z, u1);
 }
 
 double smp_phong_lobe_pdf(vec3 w, double n)
@@ -39,7 +39,7 @@ vec3 smp_ggx_sample(double u1, double u2, double alpha)
      * cos^2 theta = (1 - u2) / (u2 (alpha^2 - 1) + 1); u2 < 1 keeps it > 0. */
     double a2 = alpha * alpha;
     double c2 = (1.0 - u2) / (u2 * (a2 - 1.0) + 1.0);
-    return smp_spherical_direction(sqrt(c2), MC_2PI * u1);
+    return smp_spherical_direction_turn(sqrt(c2), u1);
 }
 
 double smp_ggx_pdf(vec3 h, double alpha)

@@ -11,6 +11,7 @@
 #include <stddef.h>
 
 #include "mc/constants.h"
+#include "mc/trig.h"
 #include "samplers/sphere.h"
 #include "samplers/spherical.h"
 
@@ -37,8 +38,9 @@ vec2 smp_unit_square_invert(vec2 p)
 vec2 smp_disc_polar_sample(double u1, double u2)
 {
     /* The area within radius r is pi r^2: P(R <= r) = r^2 = u2. */
-    double r = sqrt(u2), phi = MC_2PI * u1;
-    return vec2_make(r * cos(phi), r * sin(phi));
+    double r = sqrt(u2), s, c;
+    mc_sincos_turn(u1, &s, &c); /* the angle is 2 pi u1 */
+    return vec2_make(r * c, r * s);
 }
 
 static double disc_pdf(vec2 p)

@@ -8,13 +8,14 @@
 #include <math.h>
 
 #include "mc/constants.h"
+#include "mc/trig.h"
 #include "samplers/spherical.h"
 
 vec3 smp_uniform_sphere_sample(double u1, double u2)
 {
     /* Archimedes: the band between heights z and z + dz has area 2 pi dz for
      * every z in [-1, 1], so z is uniform. */
-    return smp_spherical_direction(1.0 - 2.0 * u2, MC_2PI * u1);
+    return smp_spherical_direction_turn(1.0 - 2.0 * u2, u1);
 }
 
 double smp_uniform_sphere_pdf(vec3 w)
@@ -33,9 +34,10 @@ vec2 smp_uniform_sphere_invert(vec3 w)
  * (0, 1] so the logarithm is finite. */
 static void box_muller(double u1, double u2, double *g1, double *g2)
 {
-    double r = sqrt(-2.0 * log1p(-u1)), phi = MC_2PI * u2;
-    *g1 = r * cos(phi);
-    *g2 = r * sin(phi);
+    double r = sqrt(-2.0 * log1p(-u1)), s, c;
+    mc_sincos_turn(u2, &s, &c); /* the angle is 2 pi u2 */
+    *g1 = r * c;
+    *g2 = r * s;
 }
 
 vec3 smp_uniform_sphere_sample_gaussian(double u1, double u2, double u3, double u4)

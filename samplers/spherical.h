@@ -14,6 +14,7 @@
 #include <math.h>
 
 #include "mc/constants.h"
+#include "mc/trig.h"
 #include "mc/vec3.h"
 
 /* The unit direction with polar cosine cos_theta (in [-1, 1]) and azimuth
@@ -23,6 +24,21 @@ static inline vec3 smp_spherical_direction(double cos_theta, double phi)
 {
     double sin_theta = sqrt(fmax(0.0, (1.0 - cos_theta) * (1.0 + cos_theta)));
     return vec3_make(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
+}
+
+/* The same direction with azimuth phi = 2 pi u, u a fraction of a turn
+ * (the samplers' u in [0, 1)). mc_sincos_turn reduces u exactly, which
+ * makes this both cheaper than cos and sin of the product 2 pi u and more
+ * accurate (it skips that product's rounding). */
+static inline vec3 smp_spherical_direction_turn(double cos_theta, double u)
+{
+    /* The clamp as a comparison rather than fmax, which gcc leaves as a
+     * library call on this hot path; NaN maps to 0 either way. */
+    double s2 = (1.0 - cos_theta) * (1.0 + cos_theta);
+    double sin_theta = sqrt(s2 > 0.0 ? s2 : 0.0);
+    double s, c;
+    mc_sincos_turn(u, &s, &c);
+    return vec3_make(sin_theta * c, sin_theta * s, cos_theta);
 }
 
 /* The azimuth of w in [0, 2 pi); 0 on the z axis. */
