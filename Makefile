@@ -42,7 +42,10 @@ ifeq ($(cc_is_gcc)$(SAN),10)
 MODE += -flto=auto
 AR := gcc-ar
 endif
-ALL_CFLAGS = -std=c17 $(WARN) -I. -fopenmp $(MODE) -MMD -MP $(CFLAGS)
+# -fno-math-errno: nothing reads errno after a math function, and without
+# it every sqrt carries a test and a call for the negative case (4% of the
+# renderer's instructions). Results are unchanged: IEEE semantics stay.
+ALL_CFLAGS = -std=c17 $(WARN) -I. -fopenmp -fno-math-errno $(MODE) -MMD -MP $(CFLAGS)
 ALL_LDFLAGS = -fopenmp $(MODE) $(LDFLAGS)
 # Debian's library names; no pkg-config at parse time, because `make deps`
 # may be what installs pkg-config.
