@@ -9,7 +9,6 @@
 
 .SUFFIXES:
 .DELETE_ON_ERROR:
-.SECONDARY:
 
 CC ?= cc
 CFLAGS ?= -O2 -g
@@ -134,7 +133,21 @@ clean:
 	rm -rf build
 
 # --- compilation -----------------------------------------------------------
-$(B)/obj/%.o: %.c
+# The compiler and its flags are recorded in a stamp that changes only when
+# they do; every object depends on it, so `make CFLAGS=...` or a Makefile
+# flag change rebuilds what it must and nothing else.
+FLAGS_STAMP := $(B)/.flags
+flags_now = $(CC) $(ALL_CFLAGS) | $(ALL_LDFLAGS) | $(AR)
+$(FLAGS_STAMP): FORCE
+	@mkdir -p $(@D)
+	@echo '$(flags_now)' | cmp -s - $@ || echo '$(flags_now)' > $@
+FORCE:
+
+# Objects of programs and tests are intermediate files of pattern rules;
+# keep them, so that a rebuild recompiles only what changed.
+.PRECIOUS: $(B)/obj/%.o
+
+$(B)/obj/%.o: %.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
