@@ -99,6 +99,10 @@ static void report(const options *o, const rt_image *img, const rt_render_stats 
 
 int main(int argc, char **argv)
 {
+    /* First of all, so that a Ctrl-C at any moment, even before the render
+     * starts, ends in the documented way: the image so far (possibly no
+     * samples), a line saying so, exit status 130. */
+    signal(SIGINT, on_sigint);
     options o = parse(argc, argv);
     rt_format format = rt_format_from_path(o.out);
     if (format == RT_FORMAT_UNKNOWN)
@@ -127,7 +131,6 @@ int main(int argc, char **argv)
     bool tty = isatty(fileno(stderr));
     job.progress = tty ? show_progress : NULL;
     job.progress_ctx = clock;
-    signal(SIGINT, on_sigint);
     rt_render_stats st;
     if (rt_render(&job, img, &st) < 0) {
         fprintf(stderr, "%s: out of memory\n", prog);
