@@ -226,8 +226,9 @@ static int bad_input_cases(const char *path, const char *name, const char *sub, 
     const char *cases[10][3] = {{"--no-such-flag", NULL, NULL}, {"--samples", "-3", NULL},
                                 {"--samples", "abc", NULL},     {"--samples", "0", NULL},
                                 {"--samples", "1e30", NULL},    {"--seed", "x", NULL},
-                                {"--seed", NULL, NULL},         {"--samples", NULL, NULL}};
-    int n_cases = 8, bad = 0;
+                                {"--seed", NULL, NULL},         {"--samples", NULL, NULL},
+                                {"--seed", " -1", NULL},        {"--seed", "0x", NULL}};
+    int n_cases = 10, bad = 0;
     char why[512];
     for (int c = 0; c < n_cases; c++) {
         const char *flag = cases[c][0];
@@ -367,21 +368,30 @@ int main(void)
     static struct CMUnitTest tests[MAX_PROGRAMS + 1];
     static char names[MAX_PROGRAMS][96];
     size_t n = 0;
-    char bin[1024];
-    snprintf(bin, sizeof bin, "%s/bin", mc_test_build_dir());
-    DIR *d = opendir(bin);
-    for (struct dirent *e; d && (e = readdir(d)) && n < MAX_PROGRAMS;) {
-        char path[2048];
-        struct stat st;
-        snprintf(path, sizeof path, "%s/%s", bin, e->d_name);
-        if (e->d_name[0] != '.' && stat(path, &st) == 0 && S_ISREG(st.st_mode) && access(path, X_OK) == 0)
-            paths[n++] = strdup(path);
+    /* Every program and every benchmark follows the same CLI rules. */
+    static const char *const dirs[] = {"bin", "bench"};
+    for (int k = 0; k < 2; k++) {
+        char dir[1024];
+        snprintf(dir, sizeof dir, "%s/%s", mc_test_build_dir(), dirs[k]);
+        DIR *d = opendir(dir);
+        for (struct dirent *e; d && (e = readdir(d)) && n < MAX_PROGRAMS;) {
+            char path[2048];
+            struct stat st;
+            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+            if (e->d_name[0] != '.' && stat(path, &st) == 0 && S_ISREG(st.st_mode) &&
+                access(path, X_OK) == 0)
+                paths[n++] = strdup(path);
+        }
+        if (d)
+            closedir(d);
     }
-    if (d)
-        closedir(d);
     qsort(paths, n, sizeof paths[0], by_name);
-    if (n == 0)
-        printf("no programs in %s: only the negative controls run\n", bin);
+    /* No programs means the build directory is wrong: that must not pass. */
+    if (n == 0) {
+        fprintf(stderr, "test_cli: no programs in %s/bin or %s/bench\n", mc_test_build_dir(),
+                mc_test_build_dir());
+        return 1;
+    }
     tests[0] = (struct CMUnitTest){"test_cli_negative_controls", test_cli_negative_controls, NULL, NULL,
                                    NULL};
     for (size_t i = 0; i < n; i++) {

@@ -1,6 +1,7 @@
 /* examples/common/cli.c - option parsing, errors, the result table. */
 #include "examples/common/cli.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -51,11 +52,15 @@ bool app_parse_count(const char *s, uint64_t max, uint64_t *out)
 
 bool app_parse_seed(const char *s, uint64_t *out)
 {
-    if (!s || !*s || *s == '-' || *s == '+')
+    /* Decimal, or hex after 0x; never octal (strtoull's base 0 would read
+     * "010" as 8), and nothing before the first digit (strtoull skips
+     * spaces and accepts a sign, so " -1" would wrap to 2^64 - 1). */
+    if (!s || !isdigit((unsigned char)*s))
         return false;
+    bool hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
     char *end = NULL;
     errno = 0;
-    unsigned long long v = strtoull(s, &end, 0);
+    unsigned long long v = strtoull(s, &end, hex ? 16 : 10);
     if (errno || *end || end == s)
         return false;
     *out = (uint64_t)v;

@@ -64,7 +64,8 @@ int app_parse(const char *prog, const char *usage, int argc, char **argv, const 
  * within 1 .. max). Returns false for anything else. */
 bool app_parse_count(const char *s, uint64_t max, uint64_t *out);
 
-/* Parses an unsigned 64-bit seed (decimal or 0x hex). */
+/* Parses an unsigned 64-bit seed: decimal, or hex after 0x (never octal;
+ * no sign or leading space). */
 bool app_parse_seed(const char *s, uint64_t *out);
 
 /* Parses a finite double with nothing after it. */

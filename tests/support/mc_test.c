@@ -1,6 +1,7 @@
 /* tests/support/mc_test.c - seeds, near-equality and z-test assertions. */
 #include "tests/support/mc_test.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -27,10 +28,12 @@ uint64_t mc_test_seed(uint64_t default_seed)
     const char *s = getenv("MC_TEST_SEED");
     if (!s || !*s)
         return default_seed;
+    /* The rule of the programs' --seed: decimal or 0x hex, digits first. */
+    bool hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
     char *end = NULL;
     errno = 0;
-    unsigned long long v = strtoull(s, &end, 0);
-    if (errno || *end) {
+    unsigned long long v = strtoull(s, &end, hex ? 16 : 10);
+    if (!isdigit((unsigned char)*s) || errno || *end) {
         fprintf(stderr, "MC_TEST_SEED=%s is not an unsigned integer; using defaults\n", s);
         return default_seed;
     }
