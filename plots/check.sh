@@ -100,6 +100,13 @@ if [ -f "$data/pi_convergence_slopes.csv" ]; then
 fi
 
 if [ -f "$data/chi2_pvalues.csv" ]; then
+    # Both samplers must have been tested, at the same seeds: an empty side
+    # would make the checks below pass vacuously.
+    n_ok=$(awk -F, '$1 == "correct"' "$data/chi2_pvalues.csv" | wc -l)
+    n_bad=$(awk -F, '$1 == "wrong"' "$data/chi2_pvalues.csv" | wc -l)
+    if [ "$n_ok" -lt 20 ] || [ "$n_ok" -ne "$n_bad" ]; then
+        fail "chi2_pvalues.csv: $n_ok correct and $n_bad wrong rows (need >= 20 each, equal)"
+    fi
     # Kolmogorov-Smirnov distance of the correct p-values from U(0,1);
     # sqrt(n) D > 1.95 has probability 0.001 under uniformity.
     ks=$(awk -F, '$1 == "correct" { print $6 }' "$data/chi2_pvalues.csv" | sort -g |

@@ -6,7 +6,8 @@
 # Verdicts: "ok" when |z| < 4 (two-sided false-alarm rate 6.3e-5 per row);
 # a row with stderr 0 (a zero-variance estimator) is ok only when the
 # estimate equals the exact value within 1e-12 relative; a row without an
-# exact value is "ok (no exact)"; a non-finite estimate or stderr fails.
+# exact value is "ok (no exact)"; a non-finite estimate or stderr fails;
+# a pvalue column (a chi-square test of the histogram) below 1e-4 fails.
 # Programs not built yet are skipped with a note. The last step renders
 # the Cornell box (book scene, 32 spp) into $MC_BUILD/cornell_box.png.
 #
@@ -82,6 +83,11 @@ for entry in "${PROGRAMS[@]}"; do
                 zv = (e - x) / s; z = sprintf("%.3f", zv)
                 if (abs(zv) >= zmax) v = sprintf("FAIL (|z| >= %g)", zmax)
             }
+            # A program that also tests its histogram reports a pvalue
+            # column: a chi-square p below 1e-4 fails the row too (false
+            # alarm 1e-4 per row).
+            if (v !~ /^FAIL/ && ("pvalue" in col) && num($col["pvalue"]) && $col["pvalue"] < 1e-4)
+                v = sprintf("FAIL (chi-square p = %s < 1e-4)", $col["pvalue"])
             if (v ~ /^FAIL/) bad++
             printf "%-18s %-16s %18.12g %18s %11.3e %8s  %s\n", prog, m, e, (x == "" ? "-" : sprintf("%.12g", x)), s, z, v
             rows++

@@ -10,6 +10,9 @@ build=${MC_BUILD:-build}
 logs=$(mktemp -d)
 trap 'rm -rf "$logs"' EXIT
 jobs_max=${MC_TEST_JOBS:-2}
+# A hung test must not hang make test, soak or CI: each group gets at most
+# MC_TEST_TIMEOUT seconds (timeout(1) then exits 124, counted as a failure).
+limit=${MC_TEST_TIMEOUT:-900}
 if [ "${JUNIT:-0}" = 1 ]; then
     mkdir -p "$build/test-results"
     rm -f "$build/test-results"/*.xml
@@ -20,9 +23,9 @@ run_one() { # $1 = test program; writes $logs/<name>.log and .rc
     name=$(basename "$t")
     if [ "${JUNIT:-0}" = 1 ]; then
         CMOCKA_MESSAGE_OUTPUT=xml CMOCKA_XML_FILE="$build/test-results/%g.xml" \
-            MC_BUILD="$build" "$t" >"$logs/$name.log" 2>&1
+            MC_BUILD="$build" timeout "$limit" "$t" >"$logs/$name.log" 2>&1
     else
-        MC_BUILD="$build" "$t" >"$logs/$name.log" 2>&1
+        MC_BUILD="$build" timeout "$limit" "$t" >"$logs/$name.log" 2>&1
     fi
     echo $? >"$logs/$name.rc"
 }
@@ -56,6 +59,9 @@ for t in "$@"; do
     else
         p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$logs/$name.log" | tail -1)
         f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$logs/$name.log" | tail -1)
+    fi
+    if [ "$rc" = 124 ]; then
+        echo "$name: timed out after $limit s"
     fi
     if [ -z "$p" ] && [ -z "$f" ]; then
         # No summary: the program crashed or could not start. One failure.
