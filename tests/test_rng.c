@@ -84,9 +84,28 @@ static void test_rng_uniform_chi2(void **state)
                  r.pvalue, (unsigned long long)seed);
 }
 
-/* Two derived streams (indices 0 and 1) must be uncorrelated: the sample
- * correlation of 10^6 pairs is normal with sd 1/sqrt(N) = 0.001 under
- * independence; |r| < 0.004 is a 4-sigma bound (false alarm 6.3e-5).
+/* The sample correlation of n pairs (x from a, y from b, both U[0,1)) and
+ * the lag-1 correlation within a. With `mix` > 0 the y of each pair is
+ * replaced, with probability mix, by its x: a correlation of about mix. Under
+ * independence each r is normal with sd 1/sqrt(n); var(U - 1/2) = 1/12, so
+ * r = 12 mean((x - 1/2)(y - 1/2)). */
+static void correlations(mc_rng *a, mc_rng *b, int n, double mix, double *r_ab, double *r_lag)
+{
+    double sab = 0.0, slag = 0.0, prev = mc_rng_uniform(a) - 0.5;
+    for (int i = 0; i < n; i++) {
+        double x = mc_rng_uniform(a) - 0.5, y = mc_rng_uniform(b) - 0.5;
+        if (mix > 0.0 && mc_rng_uniform(b) < mix)
+            y = x;
+        sab += x * y;
+        slag += x * prev;
+        prev = x;
+    }
+    *r_ab = 12.0 * sab / n;
+    *r_lag = 12.0 * slag / n;
+}
+
+/* Two derived streams (indices 0 and 1) must be uncorrelated: with 10^6
+ * pairs, |r| < 0.004 is a 4-sigma bound (false alarm 6.3e-5 per statistic).
  * Streams whose indices differ by one are the case a weak derivation gets
  * wrong. The lag-1 correlation within a stream is tested the same way. */
 static void test_rng_streams_uncorrelated(void **state)
@@ -95,30 +114,25 @@ static void test_rng_streams_uncorrelated(void **state)
     enum { N = 1000000 };
     uint64_t seed = mc_test_seed(1003u);
     mc_rng a = mc_rng_derive(seed, 0u), b = mc_rng_derive(seed, 1u);
-    double sab = 0.0, slag = 0.0, prev = mc_rng_uniform(&a) - 0.5;
-    for (int i = 0; i < N; i++) {
-        double x = mc_rng_uniform(&a) - 0.5, y = mc_rng_uniform(&b) - 0.5;
-        sab += x * y;
-        slag += x * prev;
-        prev = x;
-    }
-    /* var(U - 1/2) = 1/12, so r = 12 * mean(xy). */
-    double r_ab = 12.0 * sab / N, r_lag = 12.0 * slag / N;
+    double r_ab, r_lag;
+    correlations(&a, &b, N, 0.0, &r_ab, &r_lag);
     if (fabs(r_ab) >= 0.004 || fabs(r_lag) >= 0.004)
         fail_msg("correlation between streams %.4g, lag-1 %.4g (bound 0.004, seed %llu)", r_ab, r_lag,
                  (unsigned long long)seed);
 }
 
-/* Negative control for the correlation test: a stream against a copy of
- * itself shifted by nothing has r = 1 and must be flagged. */
+/* Negative control for the same bound: streams that share 2% of their
+ * values (r about 0.02, 20 sd at 10^6 pairs) must be flagged. */
 static void test_rng_streams_negative_control(void **state)
 {
     (void)state;
-    mc_rng a = mc_rng_derive(5u, 0u), b = mc_rng_derive(5u, 0u);
-    double s = 0.0;
-    for (int i = 0; i < 100000; i++)
-        s += (mc_rng_uniform(&a) - 0.5) * (mc_rng_uniform(&b) - 0.5);
-    assert_true(fabs(12.0 * s / 100000) >= 0.004);
+    enum { N = 1000000 };
+    uint64_t seed = mc_test_seed(1005u);
+    mc_rng a = mc_rng_derive(seed, 0u), b = mc_rng_derive(seed, 1u);
+    double r_ab, r_lag;
+    correlations(&a, &b, N, 0.02, &r_ab, &r_lag);
+    if (!(fabs(r_ab) >= 0.004))
+        fail_msg("2%% shared values not flagged: r = %.4g (seed %llu)", r_ab, (unsigned long long)seed);
 }
 
 static void test_rng_bounded_range(void **state)
