@@ -16,8 +16,9 @@
  *
  * Build and run:  make all && build/bin/warp list
  *                 build/bin/warp sample cosine --n 5 --seed 7
- *                 build/bin/warp sample phong --param n=10 --n 3 | build/bin/warp pdf phong --param
- * n=10 build/bin/warp chi2 mixture --param w=0.2
+ *                 build/bin/warp sample phong --param n=10 --n 3 |
+ *                     build/bin/warp pdf phong --param n=10
+ *                 build/bin/warp chi2 mixture --param w=0.2
  */
 #include <stdio.h>
 #include <stdlib.h>

@@ -453,11 +453,14 @@ static int plane_divisor(uint64_t n, double per_cell)
 mc_gof_spec warp_gof_spec(warp_gof_ctx *ctx, uint64_t n)
 {
     const warp_entry *e = ctx->e;
-    mc_gof_spec spec = {2, {0.0, 0.0}, {1.0, 1.0}, {50, 50}, gof_sample, gof_density, ctx};
-    /* The full resolution suits 10^6 samples. With fewer, coarser cells keep
-     * about WARP_GOF_PER_CELL samples per cell on average; otherwise Pearson
-     * pooling would merge most cells and the test would lose its power. */
+    /* The full 50 x 100 resolution suits 10^6 samples. With fewer, coarser
+     * cells keep about WARP_GOF_PER_CELL samples per cell on average;
+     * otherwise Pearson pooling would merge most cells and the test would
+     * lose its power. */
     double scale = fmin(1.0, sqrt((double)n / (WARP_GOF_PER_CELL * 5000.0)));
+    mc_gof_spec spec = {2, {0.0, 0.0}, {1.0, 1.0},
+                        {(int)fmax(2.0, 50.0 * scale), (int)fmax(2.0, 100.0 * scale)},
+                        gof_sample, gof_density, ctx};
     if (e->point == WARP_REAL || e->point == WARP_INDEX) {
         bool index = e->point == WARP_INDEX;
         spec.dims = 1;
@@ -465,8 +468,7 @@ mc_gof_spec warp_gof_spec(warp_gof_ctx *ctx, uint64_t n)
         spec.cells[0] = index ? (int)ctx->s->p.n_weights
                               : (int)fmax(2.0, fmin(100.0, (double)n / WARP_GOF_PER_CELL));
     } else if (e->chart == G_DISC) {
-        spec.hi[1] = MC_2PI, spec.cells[1] = 100;
-        spec.cells[0] = (int)fmax(2.0, 50.0 * scale), spec.cells[1] = (int)fmax(2.0, 100.0 * scale);
+        spec.hi[1] = MC_2PI;
     } else if (e->chart == G_DIRECTION) {
         pdf_chart_rect(&ctx->s->chart, spec.lo, spec.hi);
         if (ctx->s->chart.kind == PDF_CHART_LIGHT_PLANE) {
@@ -474,11 +476,7 @@ mc_gof_spec warp_gof_spec(warp_gof_ctx *ctx, uint64_t n)
              * cell edges. */
             int k = plane_divisor(n, WARP_GOF_PER_CELL);
             spec.cells[0] = 120 / k, spec.cells[1] = 90 / k;
-        } else {
-            spec.cells[0] = (int)fmax(2.0, 50.0 * scale), spec.cells[1] = (int)fmax(2.0, 100.0 * scale);
         }
-    } else {
-        spec.cells[0] = (int)fmax(2.0, 50.0 * scale), spec.cells[1] = (int)fmax(2.0, 100.0 * scale);
     }
     return spec;
 }
