@@ -2,15 +2,15 @@
  *
  * Renders the book's final scene (chapter 10 of "Ray Tracing: The Rest of
  * Your Life") at 600 x 600, 100 samples per pixel, max depth 50, with the
- * book's mixture strategy, once with one thread and once with two, and
- * prints wall time, paths/s and ray segments/s for each, the speed-up over
- * the book's own program (68 s for this render on one thread of the
- * reference machine, 0.53 M paths/s), the dropped non-finite samples and
- * the mean linear RGB of the image.
+ * book's mixture strategy, once for each thread count from 1 up to
+ * --max-threads T (default 2), and prints wall time, paths/s and ray
+ * segments/s for each, the speed-up over the book's own program (68 s for
+ * this render on one thread of the reference machine, 0.53 M paths/s), the
+ * dropped non-finite samples and the mean linear RGB of the image.
  *
  * Build: make bench (or make all); run: build/bench/bench_render
  * A quicker run: MC_BENCH_QUICK=1 (or --quick) renders 10 samples per
- * pixel instead of 100; --spp N and --threads-list "1 2 4" override.
+ * pixel instead of 100; --spp N and --max-threads T override.
  */
 #include <stdio.h>
 #include <stdlib.h>

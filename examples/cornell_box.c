@@ -26,6 +26,11 @@
 static const char *const prog = "cornell_box";
 static atomic_int interrupted; /* set by SIGINT, polled by the renderer */
 
+/* C17 7.14.1.1 allows a handler to touch only lock-free atomics: an
+ * atomic_int that needed a lock could deadlock against the interrupted
+ * thread. Require it to be always lock-free, not just sometimes. */
+_Static_assert(ATOMIC_INT_LOCK_FREE == 2, "the SIGINT handler needs a lock-free atomic_int");
+
 static void on_sigint(int sig)
 {
     (void)sig;
@@ -41,8 +46,6 @@ typedef struct options {
 
 static options parse(int argc, char **argv)
 {
-    static const char *const strategies[] = {"uniform", "cosine", "light", "mixture", "mis", NULL};
-    static const char *const gammas[] = {"2", "2.2", "srgb", NULL};
     options o = {"book", "mixture", "2", "cornell.png", 600, 50, 0, 100, 1, false, false};
     const app_opt opts[] = {
         {"--scene", APP_CHOICE, &o.scene, "the scene (book)", rt_scene_names, 0, 0},
@@ -50,11 +53,11 @@ static options parse(int argc, char **argv)
         {"--spp", APP_COUNT, &o.spp, "samples per pixel (100)", NULL, 0, 0},
         {"--samples", APP_COUNT, &o.spp, "same as --spp", NULL, 0, 0},
         {"--max-depth", APP_INT, &o.depth, "most ray segments per path (50)", NULL, 0, 1e6},
-        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (mixture)", strategies, 0, 0},
+        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (mixture)", rt_strategy_names, 0, 0},
         {"--threads", APP_INT, &o.threads, "OpenMP threads, 0 for all (0)", NULL, 0, 4096},
         {"--seed", APP_SEED, &o.seed, "random seed (1)", NULL, 0, 0},
         {"-o", APP_STRING, &o.out, "output image .png, .ppm or .pfm (linear) (cornell.png)", NULL, 0, 0},
-        {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (2)", gammas, 0, 0},
+        {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (2)", rt_gamma_names, 0, 0},
         {"--csv", APP_FLAG, &o.csv, "print the mean linear RGB as CSV", NULL, 0, 0},
         {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments (off)", NULL, 0, 0},
     };
@@ -101,8 +104,15 @@ int main(int argc, char **argv)
 {
     /* First of all, so that a Ctrl-C at any moment, even before the render
      * starts, ends in the documented way: the image so far (possibly no
-     * samples), a line saying so, exit status 130. */
-    signal(SIGINT, on_sigint);
+     * samples), a line saying so, exit status 130. sigaction rather than
+     * signal(): under _POSIX_C_SOURCE, signal() may reset the handler after
+     * one delivery, and a second Ctrl-C would then kill us mid-write.
+     * SA_RESTART keeps a write(2) in progress from failing with EINTR. */
+    struct sigaction sa = {0};
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &sa, NULL);
     options o = parse(argc, argv);
     rt_format format = rt_format_from_path(o.out);
     if (format == RT_FORMAT_UNKNOWN)

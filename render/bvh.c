@@ -11,9 +11,10 @@
 #define COST_TRAVERSAL 4.0
 
 /* Past this depth the SAH is replaced by a median split, which halves the
- * count at every level: the tree then stays below 40 + log2(n) levels,
- * within the fixed traversal stack, whatever the input (coincident or
- * adversarial centroids). */
+ * count at every level: the tree then stays below 40 + log2(n) levels
+ * whatever the input (coincident or adversarial centroids). That fits the
+ * fixed traversal stack (RT_BVH_MAX_DEPTH) for n below 2^24; for larger n
+ * rt_bvh_build checks the depth reached and fails if it does not fit. */
 #define SAH_DEPTH_LIMIT 40
 
 typedef struct builder {
@@ -228,6 +229,12 @@ int rt_bvh_build(rt_bvh *bvh, rt_prim *prims, int n)
     build_node(&b, 0, n, 0);
     free(b.boxes);
     free(b.centers);
+    /* The traversal pushes one node per interior level: a deeper tree
+     * would overflow its stack. */
+    if (b.depth >= RT_BVH_MAX_DEPTH) {
+        free(b.nodes);
+        return -1;
+    }
     bvh->nodes = b.nodes;
     bvh->n_nodes = b.n_nodes;
     bvh->depth = b.depth;

@@ -24,8 +24,13 @@
 #include "render/shapes.h"
 
 #define RT_BVH_BINS 16      /* SAH bins per split (>= 12) */
-#define RT_BVH_MAX_LEAF 16  /* at most this many primitives in a leaf... */
-#define RT_BVH_MAX_DEPTH 64 /* ...and at most this many levels (the stack) */
+/* The SAH makes leaves of at most RT_BVH_MAX_LEAF primitives, except where
+ * every centroid coincides: no plane separates those, and above the median
+ * split depth they stay in one leaf of up to INT16_MAX primitives. */
+#define RT_BVH_MAX_LEAF 16
+/* The traversal stack: rt_bvh_build fails rather than return a tree whose
+ * depth (levels below the root) is RT_BVH_MAX_DEPTH or more. */
+#define RT_BVH_MAX_DEPTH 64
 #define RT_PACKET 4         /* quads per packet (bvh.c's lane tournament assumes 4) */
 
 typedef struct rt_bvh_node {
@@ -52,15 +57,17 @@ typedef struct rt_quad_packet {
 typedef struct rt_bvh {
     rt_bvh_node *nodes; /* nodes[0] is the root */
     int n_nodes;
-    int depth;          /* levels below the root, < RT_BVH_MAX_DEPTH */
+    int depth;          /* levels below the root, < RT_BVH_MAX_DEPTH (checked by rt_bvh_build) */
     rt_quad_packet *packets;
     int n_packets;
 } rt_bvh;
 
 /* Builds the hierarchy over prims[0..n) (n >= 1), reordering the array so
  * that every leaf holds a contiguous range, quads first. Allocates the
- * nodes and packets; returns 0, or -1 when out of memory (bvh is then
- * empty). */
+ * nodes and packets; returns 0, or -1 when out of memory or when the tree
+ * would be RT_BVH_MAX_DEPTH levels deep or deeper, too deep for the
+ * traversal stack (possible only for about 2^24 primitives or more); bvh
+ * is then empty. */
 int rt_bvh_build(rt_bvh *bvh, rt_prim *prims, int n);
 
 /* Frees the nodes and packets; the struct may be reused. */

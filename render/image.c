@@ -111,17 +111,16 @@ rt_format rt_format_from_path(const char *path)
     return RT_FORMAT_UNKNOWN;
 }
 
+const char *const rt_gamma_names[] = {"2", "2.2", "srgb", NULL};
+
 bool rt_gamma_parse(const char *name, rt_gamma *out)
 {
-    if (strcmp(name, "2") == 0)
-        *out = RT_GAMMA_2;
-    else if (strcmp(name, "2.2") == 0)
-        *out = RT_GAMMA_2_2;
-    else if (strcmp(name, "srgb") == 0)
-        *out = RT_GAMMA_SRGB;
-    else
-        return false;
-    return true;
+    for (int i = 0; rt_gamma_names[i]; i++)
+        if (strcmp(name, rt_gamma_names[i]) == 0) {
+            *out = (rt_gamma)i;
+            return true;
+        }
+    return false;
 }
 
 double rt_gamma_encode(double linear, rt_gamma g)
@@ -192,11 +191,27 @@ static int write_pfm(const rt_image *img, FILE *f)
     return ok ? 0 : -1;
 }
 
+/* With NULL handlers libpng prints its messages to stderr before jumping;
+ * library code never prints, so errors jump back silently (the caller sees
+ * -1) and warnings, which change nothing in the file, are dropped. */
+static void png_silent_error(png_structp png, png_const_charp msg)
+{
+    (void)msg;
+    png_longjmp(png, 1);
+}
+
+static void png_silent_warning(png_structp png, png_const_charp msg)
+{
+    (void)png;
+    (void)msg;
+}
+
 /* libpng reports errors by longjmp; nothing this function changes after
  * setjmp is read after the jump, so no local needs to be volatile. */
 static int write_png(const rt_image *img, FILE *f, unsigned char *rows)
 {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_structp png =
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, png_silent_error, png_silent_warning);
     png_infop info = png ? png_create_info_struct(png) : NULL;
     if (!png || !info) {
         png_destroy_write_struct(&png, &info);

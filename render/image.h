@@ -71,6 +71,9 @@ typedef enum rt_gamma { RT_GAMMA_2, RT_GAMMA_2_2, RT_GAMMA_SRGB } rt_gamma;
 /* "2", "2.2" or "srgb"; false for anything else. */
 bool rt_gamma_parse(const char *name, rt_gamma *out);
 
+/* The names rt_gamma_parse accepts, in rt_gamma order, NULL-terminated. */
+extern const char *const rt_gamma_names[];
+
 /* The display value of a linear value: x^(1/2) (the book's sqrt),
  * x^(1/2.2), or the sRGB curve (12.92 x below 0.0031308, else
  * 1.055 x^(1/2.4) - 0.055). Negative or NaN input gives 0. */

@@ -11,7 +11,7 @@
 
 _Static_assert(RT_MAX_LIGHTS <= RT_LIGHTS_AT_MAX, "rt_lights_at holds every light of a scene");
 
-static const char *const strategy_names[] = {"uniform", "cosine", "light", "mixture", "mis"};
+const char *const rt_strategy_names[] = {"uniform", "cosine", "light", "mixture", "mis", NULL};
 
 rt_path_settings rt_path_settings_default(rt_strategy strategy)
 {
@@ -22,7 +22,7 @@ rt_path_settings rt_path_settings_default(rt_strategy strategy)
 bool rt_strategy_parse(const char *name, rt_strategy *out)
 {
     for (int i = 0; i < 5; i++)
-        if (strcmp(name, strategy_names[i]) == 0) {
+        if (strcmp(name, rt_strategy_names[i]) == 0) {
             *out = (rt_strategy)i;
             return true;
         }
@@ -31,7 +31,7 @@ bool rt_strategy_parse(const char *name, rt_strategy *out)
 
 const char *rt_strategy_name(rt_strategy s)
 {
-    return (unsigned)s < 5u ? strategy_names[s] : "?";
+    return (unsigned)s < 5u ? rt_strategy_names[s] : "?";
 }
 
 static bool is_zero(vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
@@ -198,6 +198,21 @@ static vec3 arriving(const rt_scene *s, rt_ray r, uint64_t *segments)
     return rt_material_emitted(rt_scene_material(s, h.material), &h);
 }
 
+/* The power heuristic a^2 / (a^2 + b^2) for the strategy with density a,
+ * written as 1 / (1 + (b/a)^2) so that an infinite a (the cone pdf of a
+ * vanishingly small sphere light) gives 1 instead of inf/inf = NaN, and a
+ * huge ratio overflows to weight 0 rather than to NaN. a == 0: that strategy
+ * could not have drawn the direction, so it gets nothing. */
+static double power_weight(double a, double b)
+{
+    if (!(a > 0.0))
+        return 0.0;
+    if (b == 0.0)
+        return 1.0;
+    double r = b / a;
+    return 1.0 / (1.0 + r * r);
+}
+
 /* The weight of light found by continuing the path from `from` along dir,
  * drawn by the material with density p_mat, when the light list could also
  * have sent a shadow ray there. */
@@ -209,7 +224,7 @@ static double continued_weight(const rt_scene *s, const rt_path_settings *ps, ve
     double pl = lights_value(s, ps, from, dir);
     if (ps->strategy == RT_LIGHT)
         return pl > 0.0 ? 0.0 : 1.0;
-    return p_mat * p_mat / (p_mat * p_mat + pl * pl);
+    return power_weight(p_mat, pl);
 }
 
 /* The shadow-ray estimate of light arriving at the diffuse hit h directly,
@@ -231,7 +246,7 @@ static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt
     double w = 1.0;
     if (ps->strategy == RT_MIS) {
         double pm = material_value(ps, sr, dir);
-        w = pl * pl / (pl * pl + pm * pm);
+        w = power_weight(pl, pm);
     }
     return vec3_scale(vec3_mul(sr->attenuation, le), sp * w / pl);
 }

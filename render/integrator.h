@@ -64,6 +64,10 @@ bool rt_strategy_parse(const char *name, rt_strategy *out);
 /* The name of a strategy. */
 const char *rt_strategy_name(rt_strategy s);
 
+/* The strategy names in rt_strategy order, NULL-terminated (for option
+ * tables and help text). */
+extern const char *const rt_strategy_names[];
+
 /* One sample of the radiance arriving along r (unit direction) at its
  * origin. May be non-finite if the scene makes it so (the caller drops
  * such samples). *segments is increased by the number of rays traced,

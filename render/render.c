@@ -59,7 +59,9 @@ static jitter jitter_make(uint64_t spp)
     s = s ? s : 1;
     while (gcd(s, j.m) != 1)
         s++;
-    j.stride = s % j.m ? s % j.m : 1;
+    /* The loop stops by m - 1 (always coprime to m), so 1 <= s < m; for a
+     * single cell s = 1, which also leaves the cell at 0. */
+    j.stride = s;
     return j;
 }
 

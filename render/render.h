@@ -15,7 +15,9 @@
  *   bit-identical for any number of threads.
  * - The samples are taken in passes over the whole image, so a render
  *   stopped early (the cancel flag, checked between image rows) still holds
- *   a complete, evenly sampled picture.
+ *   a complete picture in which each pixel's mean is unbiased: the rows
+ *   finished in the interrupted pass have one pass more samples than the
+ *   others, and the caller reports the total sample count actually taken.
  * Library code never prints; progress goes to a caller's callback.
  */
 #ifndef RT_RENDER_H

@@ -129,8 +129,9 @@ static inline void rt_prim_hit_record(const rt_prim *p, int index, rt_ray r, dou
     }
 }
 
-/* The bounding box of a primitive, padded on every side by RT_BOX_PAD
- * times the size of its coordinates (quads are flat; see shapes.c). */
+/* The bounding box of a primitive, padded on every side by
+ * RT_BOX_PAD * (1 + max|coord|), max|coord| the largest absolute value of
+ * any coordinate of the unpadded box (quads are flat; see shapes.c). */
 rt_aabb rt_prim_bounds(const rt_prim *p);
 
 /* The relative padding of boxes (1e-9: far below the 1e-3 shadow-acne
