@@ -4,7 +4,8 @@
 #include <math.h>
 
 #include <gsl/gsl_cdf.h>
-#include <gsl/gsl_errno.h>
+
+#include "mc/gsl_quiet.h"
 
 mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, double min_expected)
 {
@@ -48,18 +49,29 @@ mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, d
         r.stat += d * d / pool_exp;
         cells++;
     }
+    /* A NaN expected count (a NaN or negative density upstream) could hide
+     * in the pool or the merged cell; it must reach the statistic so that
+     * the p-value rejects. */
+    for (size_t i = 0; i < n; i++)
+        if (isnan(exp[i]))
+            r.stat = (double)NAN;
     r.dof = cells >= 2u ? (int)cells - 1 : 0;
-    r.pvalue = r.dof > 0 ? mc_chi2_pvalue(r.stat, r.dof) : 1.0;
+    r.pvalue = r.dof > 0 || isnan(r.stat) ? mc_chi2_pvalue(r.stat, r.dof) : 1.0;
     return r;
 }
 
 double mc_chi2_pvalue(double stat, int dof)
 {
-    if (!(stat > 0.0))
+    /* An invalid (NaN) statistic, e.g. from a pdf that returned NaN, is
+     * rejected; only a genuine perfect fit gets p = 1. */
+    if (isnan(stat))
+        return 0.0;
+    if (stat <= 0.0)
         return 1.0;
     /* GSL's default handler aborts the process on a domain error; a library
-     * must return instead. The switch is idempotent. */
-    gsl_set_error_handler_off();
+     * must return instead. mc_gsl_quiet switches it off once, safely even
+     * here: the sampler suites call this from OpenMP threads. */
+    mc_gsl_quiet();
     return gsl_cdf_chisq_Q(stat, (double)dof);
 }
 

@@ -17,7 +17,7 @@
 typedef struct mc_chi2_result {
     double stat;             /* sum over pooled cells of (obs - exp)^2 / exp */
     int dof;                 /* degrees of freedom: pooled cells - 1 (0 if < 2 cells) */
-    double pvalue;           /* P(chi2_dof >= stat); 1 when dof == 0 */
+    double pvalue;           /* P(chi2_dof >= stat); 1 when dof == 0, 0 for NaN stat */
     size_t cells_pooled;     /* cells with expected < min_expected merged into one */
     double obs_in_zero_cells;/* samples observed where the expected count is 0 */
     double obs_total;        /* total observed count */
@@ -25,19 +25,23 @@ typedef struct mc_chi2_result {
 } mc_chi2_result;
 
 /* Pearson's test of observed counts obs[0..n) against expected counts
- * exp[0..n) (n >= 1, all finite and >= 0). Cells with exp < min_expected
- * (5 is the textbook rule) are pooled into one cell; if that pool's
- * expected count is still below min_expected it is merged with the
- * smallest remaining cell. Cells whose expected count is exactly 0 are left
- * out of the statistic and their observations reported in
- * obs_in_zero_cells, for the caller to judge (samples where the pdf says
- * none can fall is a failure no p-value should dilute). No allocation. */
+ * exp[0..n) (n >= 1, all finite and >= 0; a NaN is rejected, see below).
+ * Cells with exp < min_expected (5 is the textbook rule) are pooled into
+ * one cell; if that pool's expected count is still below min_expected it
+ * is merged with the smallest remaining cell. Cells whose expected count
+ * is exactly 0 are left out of the statistic and their observations
+ * reported in obs_in_zero_cells, for the caller to judge (samples where
+ * the pdf says none can fall is a failure no p-value should dilute). A NaN
+ * among the expected counts makes stat NaN and so the p-value 0. No
+ * allocation. */
 mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, double min_expected);
 
 /* The upper tail P(X >= stat) for X chi-square with dof degrees of freedom,
  * computed directly by gsl_cdf_chisq_Q (not 1 - P, which loses every digit
- * below 1e-16). GSL's aborting error handler is switched off. dof >= 1;
- * returns 1 for stat <= 0. */
+ * below 1e-16). GSL's aborting error handler is switched off, once per
+ * process (mc/gsl_quiet.h), so this is safe from threads. dof >= 1;
+ * returns 1 for stat <= 0 and 0 for a NaN stat: an invalid statistic is
+ * rejected. */
 double mc_chi2_pvalue(double stat, int dof);
 
 /* The per-test significance level that keeps the probability of one or more

@@ -113,9 +113,15 @@ int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct)
     int status = mc_gof_cell_probs(spec, expct);
     int cells = mc_gof_cell_count(spec);
     /* The quadrature's own zero (its absolute tolerance is 1e-12) is an
-     * exactly-zero cell for the test; NaN stays NaN. */
-    for (int c = 0; c < cells; c++)
-        expct[c] = expct[c] < MC_GOF_ZERO_CELL_PROB ? 0.0 : expct[c] * (double)n;
+     * exactly-zero cell for the test; NaN stays NaN. A cell clearly below
+     * that zero is a pdf that goes negative, not round-off: it becomes NaN
+     * so that the test rejects instead of pooling it away. */
+    for (int c = 0; c < cells; c++) {
+        double p = expct[c];
+        expct[c] = p < -MC_QUAD_EPSABS         ? (double)NAN
+                   : p < MC_GOF_ZERO_CELL_PROB ? 0.0
+                                               : p * (double)n;
+    }
     return status;
 }
 

@@ -81,7 +81,8 @@ double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double
 int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob);
 
 /* Writes n times the density's integral over every cell to
- * expct[0 .. mc_gof_cell_count), 0 for cells below MC_GOF_ZERO_CELL_PROB.
+ * expct[0 .. mc_gof_cell_count), 0 for cells below MC_GOF_ZERO_CELL_PROB,
+ * NaN for cells below -MC_QUAD_EPSABS (a negative density: rejected).
  * Cells are shared among OpenMP threads, each with its own workspace.
  * Returns 0, or -1 when a workspace could not be allocated (the contents
  * of expct are then unspecified). */

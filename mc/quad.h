@@ -37,7 +37,9 @@ typedef struct mc_quad mc_quad;
 #define MC_QUAD_EPSREL 1e-11
 
 /* Workspaces for up to `limit` subintervals per level (1000 is ample).
- * Returns NULL when out of memory. */
+ * Returns NULL when out of memory. Switches GSL's aborting error handler
+ * off, once per process (mc/gsl_quiet.h), so failures come back as status
+ * codes; safe to call from OpenMP threads. */
 mc_quad *mc_quad_create(size_t limit);
 
 /* Frees what mc_quad_create made; NULL is a no-op. */

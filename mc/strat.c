@@ -18,11 +18,19 @@ void mc_strat_grid(size_t n, size_t *sx, size_t *sy)
     *sy = n / s;
 }
 
+/* A cell product (i + u) / n may round up to 1.0: for the last cell once
+ * n >= 2^21, where n - 1 + (1 - 2^-32) rounds to n. Keep the documented
+ * half-open range. */
+static double below_one(double x)
+{
+    return x >= 1.0 ? nextafter(1.0, 0.0) : x;
+}
+
 void mc_jitter_1d(mc_rng *rng, size_t n, double *out)
 {
     double inv_n = 1.0 / (double)n;
     for (size_t i = 0; i < n; i++)
-        out[i] = ((double)i + mc_rng_uniform(rng)) * inv_n;
+        out[i] = below_one(((double)i + mc_rng_uniform(rng)) * inv_n);
 }
 
 void mc_jitter_2d(mc_rng *rng, size_t n, double *xy)
@@ -41,9 +49,6 @@ void mc_jitter_2d(mc_rng *rng, size_t n, double *xy)
         xy[2 * k] = mc_rng_uniform(rng);
         xy[2 * k + 1] = mc_rng_uniform(rng);
     }
-    /* A cell product may round up to 1.0 (e.g. (sx - 1 + u) / sx); keep the
-     * documented half-open range. */
     for (k = 0; k < 2 * n; k++)
-        if (xy[k] >= 1.0)
-            xy[k] = nextafter(1.0, 0.0);
+        xy[k] = below_one(xy[k]);
 }

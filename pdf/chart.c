@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "mc/constants.h"
+#include "samplers/cone.h"
 #include "samplers/planar.h"
 #include "samplers/spherical.h"
 
@@ -46,7 +47,7 @@ pdf_chart pdf_chart_quad_and_cap(vec3 origin, vec3 corner, vec3 u, vec3 v, vec3 
     vec3 axis = vec3_sub(center, origin);
     c.kind = PDF_CHART_QUAD_AND_CAP;
     c.frame = onb_from_w(vec3_normalize(axis));
-    c.cos_lo = sqrt(1.0 - radius * radius / vec3_length_sq(axis));
+    c.cos_lo = smp_sphere_cone_cos_theta_max(vec3_length_sq(axis), radius);
     return c;
 }
 

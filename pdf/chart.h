@@ -62,7 +62,9 @@ pdf_chart pdf_chart_light_plane(vec3 origin, vec3 corner, vec3 u, vec3 v);
 
 /* The parallelogram beside the cone of the sphere (center, radius) seen
  * from `origin` outside it; cos theta_max = sqrt(1 - R^2 / d^2) computed
- * from the geometry. The two must not overlap as seen from origin. */
+ * from the geometry by smp_sphere_cone_cos_theta_max, as pdf_toward_sphere
+ * does, so that the cap ends where that pdf's cone does. The two must not
+ * overlap as seen from origin. */
 pdf_chart pdf_chart_quad_and_cap(vec3 origin, vec3 corner, vec3 u, vec3 v, vec3 center,
                                  double radius);
 
@@ -74,8 +76,11 @@ void pdf_chart_rect(const pdf_chart *c, double lo[2], double hi[2]);
  * rectangle). */
 vec3 pdf_chart_direction(const pdf_chart *c, const double x[2], double *jacobian);
 
-/* The chart point of the unit direction d, or x[0] = NaN where the chart
- * does not cover d (a NaN lies outside every rectangle). Directions on the
+/* The chart point of the unit direction d. Where the chart does not cover
+ * d the point lies outside the chart's rectangle: the quad-and-cap chart
+ * returns x[0] = NaN (outside every rectangle), the spherical chart
+ * returns its (cos theta, phi) all the same, with cos theta < cos_lo; the
+ * light-plane chart covers every direction. Directions on the
  * parallelogram's edge within 1e-9 of its edge coordinates count as on it,
  * the slack pdf/pdf.c allows for the same round-off. */
 void pdf_chart_point(const pdf_chart *c, vec3 d, double x[2]);

@@ -209,10 +209,16 @@ vec3 pdf_generate(const pdf *p, mc_rng *rng)
     case PDF_TOWARD_SPHERE:
         return sphere_generate(p, rng);
     case PDF_MIXTURE: {
+        /* n == 0 is invalid (pdf_valid): no component to index; fall
+         * through to the documented +z below. */
+        if (p->as.mixture.n == 0)
+            break;
         size_t i = choose_component(p->as.mixture.weights, p->as.mixture.n, mc_rng_uniform(rng));
         return pdf_generate(p->as.mixture.components[i], rng);
     }
     case PDF_LIST: {
+        if (p->as.list.n == 0) /* invalid; mc_rng_bounded(rng, 0) divides by 0 */
+            break;
         uint32_t i = mc_rng_bounded(rng, (uint32_t)p->as.list.n);
         return pdf_generate(p->as.list.items[i], rng);
     }

@@ -108,12 +108,15 @@ pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius);
  * component i with probability weights[i] and samples it; value() sums
  * over ALL components, because any component may have produced a given
  * direction (chapter 8's "very important detail"). The arrays are
- * borrowed, not copied. */
+ * borrowed, not copied. n == 0 is invalid (pdf_valid says so); such a
+ * pdf's value is 0 everywhere and generate() returns +z. */
 pdf pdf_mixture(const pdf *const *components, const double *weights, size_t n);
 
 /* The equal-weight mixture of 1 <= n <= UINT32_MAX pdfs (one per light):
  * generate() picks an item uniformly, value() is the average of the
- * items' values. The array is borrowed, not copied. */
+ * items' values. The array is borrowed, not copied. n == 0 is invalid
+ * (pdf_valid says so); such a pdf's value is 0 everywhere and generate()
+ * returns +z. */
 pdf pdf_list(const pdf *const *items, size_t n);
 
 /* The density of direction d (unit length) per unit solid angle, >= 0 and

@@ -34,9 +34,16 @@ vec2 smp_uniform_cone_invert(vec3 w, double cos_theta_max);
  * squared distance dist_sq from the centre of a sphere of radius radius
  * (radius >= 0): sqrt(1 - radius^2 / dist_sq) outside the sphere, -1 from
  * inside or on it (the whole sphere of directions, instead of the book's
- * NaN). Computed as sqrt((d^2 - R^2) / d^2) so that no cancellation makes it
- * exceed 1. Returns 1 for radius = 0 (a point: the cone degenerates and the
- * cone pdf is infinite; callers must not sample a sphere of radius 0). */
+ * NaN). Computed as sqrt((d^2 - R^2) / d^2), which cannot exceed 1; that
+ * form is not where accuracy is lost. The cancellation that matters is in
+ * the cone's solid angle 2 pi (1 - cos_theta_max) ~ pi R^2 / d^2 for tiny
+ * R / d: cos_theta_max is 1 - R^2 / (2 d^2) rounded next to 1 (absolute
+ * error ~1e-16), so 1 - cos_theta_max, and with it the cone pdf, has a
+ * relative error of about 2e-16 d^2 / R^2: percent level at R / d = 1e-7,
+ * worse below. Once R / d is below about 1e-8 the result is exactly 1 and
+ * the cone pdf is +inf. This is a known limitation (pdf_valid rejects
+ * cos_theta_max == 1). Returns 1 for radius = 0 too (a point: callers must
+ * not sample a sphere of radius 0). */
 double smp_sphere_cone_cos_theta_max(double dist_sq, double radius);
 
 #endif /* SMP_CONE_H */

@@ -15,7 +15,9 @@
  * Events of weight 0 are never drawn by either. Both return, if asked, the
  * part of u that the choice did not use, rescaled to [0, 1) ("u_remapped"),
  * so one uniform can pick an event and then drive a continuous warp.
- * Also used by mixture densities (chapter 9, "Mixed Densities").
+ * The mixture densities of chapter 8 ("Mixture Densities") do not use
+ * these tables: pdf/pdf.c picks a component with its own running sum over
+ * the few weights of a mixture.
  */
 #ifndef SMP_DISCRETE_H
 #define SMP_DISCRETE_H

@@ -85,7 +85,7 @@ vec2 smp_cosine_hemisphere_invert_malley(vec3 w)
 vec2 smp_cosine_hemisphere_invert_acos(vec3 w)
 {
     /* u2 = (1 - cos 2 theta) / 2 = sin^2 theta: the same as the book's. */
-    return vec2_make(smp_spherical_phi(w) * MC_INV_2PI, w.x * w.x + w.y * w.y);
+    return smp_cosine_hemisphere_invert(w);
 }
 
 vec3 smp_theta_phi_sample(double u1, double u2)

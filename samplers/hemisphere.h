@@ -49,7 +49,9 @@ double smp_cosine_hemisphere_pdf(vec3 w);
 vec2 smp_cosine_hemisphere_invert(vec3 w);
 /* Inverse of Malley's: smp_disc_concentric_invert of (x, y). */
 vec2 smp_cosine_hemisphere_invert_malley(vec3 w);
-/* Inverse of the acos mapping: (phi / 2 pi, sin^2 theta). */
+/* Inverse of the acos mapping: (phi / 2 pi, sin^2 theta). Since
+ * (1 - cos 2 theta) / 2 = sin^2 theta = 1 - z^2, the acos mapping is the
+ * book's mapping, and this is smp_cosine_hemisphere_invert. */
 vec2 smp_cosine_hemisphere_invert_acos(vec3 w);
 
 /* --- uniform in (theta, phi): the Riemann-sum mapping ------------------- */

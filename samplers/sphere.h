@@ -25,8 +25,10 @@ vec2 smp_uniform_sphere_invert(vec3 w);
 
 /* Box-Muller turns (u1, u2) and (u3, u4), each in [0,1)^2, into four
  * independent standard normals; three of them, normalized, are uniform on
- * the sphere. If all three are 0 (only when u1 = u3 = 0: probability
- * 2^-64) the result is +z. No inverse: the map is many to one. */
+ * the sphere. If all three are 0 the result is +z: that needs u1 = 0 and
+ * either u3 = 0 or cos(2 pi u4) = 0, which mc_sincos_turn makes exact at
+ * u4 = 1/4 and 3/4; with 32-bit uniforms (mc_rng_uniform) the probability
+ * is about 3 * 2^-64. No inverse: the map is many to one. */
 vec3 smp_uniform_sphere_sample_gaussian(double u1, double u2, double u3, double u4);
 
 /* Draws points of the cube [-1,1)^3 from rng until one lies in the unit

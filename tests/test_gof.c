@@ -46,6 +46,25 @@ static double pdf_upper_half(const double x[2], void *ctx)
     (void)ctx;
     return x[0] >= 0.5 && x[0] <= 1.0 ? 2.0 : 0.0;
 }
+/* x = 1/2 + u/2: density 2 on [1/2, 1]. */
+static void sample_upper_half(mc_rng *rng, void *ctx, double out[2])
+{
+    (void)ctx;
+    out[0] = 0.5 + 0.5 * mc_rng_uniform(rng);
+}
+/* Right on [1/2, 1], but -1/500 on [0, 1/50) and +1/500 on [1/50, 2/50):
+ * still integrates to 1, and with 10^5 samples the negative cell (-4) and
+ * its compensating neighbour (+4, pooled) would pass unnoticed were a
+ * clearly negative cell taken for an expected-zero one. */
+static double pdf_negative_cell(const double x[2], void *ctx)
+{
+    (void)ctx;
+    if (x[0] >= 0.5 && x[0] <= 1.0)
+        return 2.0;
+    if (x[0] >= 0.0 && x[0] < 0.02)
+        return -0.002;
+    return x[0] >= 0.02 && x[0] < 0.04 ? 0.002 : 0.0;
+}
 
 /* The unit disc in (r^2, phi): uniform points have density 1 / (2 pi). */
 static void sample_disc(mc_rng *rng, void *ctx, double out[2])
@@ -158,6 +177,11 @@ static void test_gof_negative_controls(void **state)
     r = run(zero, seed);
     ok &= negctl_record(t, "samples where the pdf is 0", "zero-expected cells",
                         r.reject && r.r.obs_in_zero_cells > MC_GOF_ZERO_CELL_FRAC * N);
+    mc_gof_spec negative = {1, {0.0, 0.0}, {1.0, 0.0}, {50, 1}, sample_upper_half,
+                            pdf_negative_cell, NULL};
+    r = run(negative, seed);
+    ok &= negctl_record(t, "a pdf negative on one cell", "NaN statistic",
+                        r.reject && isnan(r.r.stat) && r.r.pvalue == 0.0);
     assert_true(ok);
 }
 

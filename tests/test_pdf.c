@@ -352,6 +352,16 @@ static void test_pdf_validity(void **state)
     pdf cyc = pdf_mixture(self, one, 1);
     self[0] = &cyc;
     assert_false(pdf_valid(&cyc));
+    /* Empty composites are invalid, yet defined: value 0, generate +z
+     * (no division by zero in the uniform choice of a list item). */
+    pdf empties[2] = {pdf_list(NULL, 0), pdf_mixture(NULL, NULL, 0)};
+    mc_rng rng = mc_rng_derive(1u, 0u);
+    for (int k = 0; k < 2; k++) {
+        assert_false(pdf_valid(&empties[k]));
+        assert_true(pdf_value(&empties[k], vec3_make(0.0, 0.0, 1.0)) == 0.0);
+        vec3 d = pdf_generate(&empties[k], &rng);
+        assert_true(d.x == 0.0 && d.y == 0.0 && d.z == 1.0);
+    }
 }
 
 /* A zero weight is never chosen, even when rounding of the other weights

@@ -104,6 +104,30 @@ static void test_strat_one_point_per_cell(void **state)
         assert_true(x1[i] >= (double)i / N && x1[i] < (double)(i + 1) / N);
 }
 
+/* For n >= 2^21 the last stratum's (n - 1 + u) / n with u = 1 - 2^-32 (the
+ * largest uniform) rounds to exactly 1.0. A random stream meets that draw
+ * with probability 2^-32, so the test builds the stream instead: a PCG
+ * state whose output is 0xffffffff (bits 41..58 set make every bit of the
+ * XSH-RR xorshift 1, whatever the rotation), stepped back n - 1 draws so
+ * that the last stratum gets it. Deterministic; no seed or threshold. */
+static void test_strat_1d_large_n_half_open(void **state)
+{
+    (void)state;
+    enum { N = 3000000 };
+    mc_rng rng = {((UINT64_C(1) << 18) - 1u) << 41, 1u};
+    mc_rng probe = rng;
+    assert_true(mc_rng_u32(&probe) == UINT32_MAX);
+    mc_rng_advance(&rng, UINT64_C(0) - (uint64_t)(N - 1)); /* the period is 2^64 */
+    double *x = malloc(N * sizeof *x);
+    assert_non_null(x);
+    mc_jitter_1d(&rng, N, x);
+    size_t bad = 0;
+    for (size_t i = 0; i < N; i++)
+        bad += !(x[i] >= 0.0 && x[i] < 1.0);
+    free(x);
+    assert_int_equal(bad, 0);
+}
+
 /* The mean of f(x, y) = x + y^2 (exact 1/2 + 1/3) over jittered sets of a
  * non-square size N = 10 (3 x 3 grid + 1 extra), averaged over 200000
  * independent sets: unbiased, so |z| < 4 (seed 3002; false alarm 6.3e-5).
@@ -166,6 +190,7 @@ int main(void)
         cmocka_unit_test(test_quad_2d_known_integrals),
         cmocka_unit_test(test_strat_grid_shapes),
         cmocka_unit_test(test_strat_one_point_per_cell),
+        cmocka_unit_test(test_strat_1d_large_n_half_open),
         cmocka_unit_test(test_strat_non_square_unbiased),
         cmocka_unit_test(test_strat_beats_plain),
     };

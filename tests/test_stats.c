@@ -178,6 +178,11 @@ static void test_chi2_pooling(void **state)
     assert_near(r.obs_in_zero_cells, 3.0, 0.0);
     assert_int_equal(r.dof, 1);
     assert_near(r.stat, 0.1 + 0.1, 1e-12);
+    /* A NaN expected count that the merge would swallow (first regular
+     * cell, pool of 3 borrowing it) still rejects. */
+    const double obs4[4] = {1, 1, 11, 20}, ex4[4] = {1, 2, (double)NAN, 20};
+    r = mc_chi2_pearson(obs4, ex4, 4, 5.0);
+    assert_true(isnan(r.stat) && r.pvalue == 0.0);
 }
 
 /* The upper tail is computed directly: at chi2 = 200 on 2 dof the exact
@@ -188,6 +193,8 @@ static void test_chi2_pvalue_upper_tail(void **state)
     assert_near(mc_chi2_pvalue(200.0, 2) / exp(-100.0), 1.0, 1e-10);
     assert_true(mc_chi2_pvalue(1e5, 10) >= 0.0);
     assert_near(mc_chi2_pvalue(0.0, 5), 1.0, 0.0);
+    /* A NaN statistic (a pdf returning NaN) is rejected, not passed. */
+    assert_true(mc_chi2_pvalue((double)NAN, 5) == 0.0);
     /* Median of chi2 with 1 dof is 0.4549364231195724. */
     assert_near(mc_chi2_pvalue(0.4549364231195724, 1), 0.5, 1e-12);
 }
