@@ -320,19 +320,112 @@ static inline void packets_closest(const rt_quad_packet *pk, int n_packets, rt_r
     *best = m[k] < *best ? m[k] : *best;
 }
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#define RT_BVH_AVX2 1
+#include <immintrin.h>
+
+/* packets_closest written with AVX2 intrinsics: the same expressions in
+ * the same order on the four lanes (no FMA: a fused multiply-add rounds
+ * once where rt_quad_t rounds twice), so the same distances bit for bit.
+ * Two things the compiler does not do by itself from the loop above:
+ * the lanes start at the leaf's tmax, so "t < tmax" and "closer than this
+ * lane's best" are one comparison; and the nearest lane is found by a
+ * vector minimum, a mask of the lanes equal to it and the lowest set bit,
+ * without a store, a reload or a data-dependent branch (a tie goes to the
+ * lower lane, then to the earlier packet, as above). */
+__attribute__((target("avx2"))) static inline void packets_closest_avx2(
+    const rt_quad_packet *pk, int n_packets, rt_ray r, double tmin, double *best, int *best_i)
+{
+    const __m256d ox = _mm256_set1_pd(r.origin.x), oy = _mm256_set1_pd(r.origin.y),
+                  oz = _mm256_set1_pd(r.origin.z), dx = _mm256_set1_pd(r.dir.x),
+                  dy = _mm256_set1_pd(r.dir.y), dz = _mm256_set1_pd(r.dir.z),
+                  lo = _mm256_set1_pd(tmin), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    __m256d m = _mm256_set1_pd(*best);
+    __m256i mi = _mm256_set1_epi64x(-1);
+    for (int p = 0; p < n_packets; p++, pk++) {
+        __m256d nx = _mm256_loadu_pd(pk->nx), ny = _mm256_loadu_pd(pk->ny), nz = _mm256_loadu_pd(pk->nz);
+        __m256d dn = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)),
+                                   _mm256_mul_pd(nz, dz));
+        __m256d on = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, ox), _mm256_mul_pd(ny, oy)),
+                                   _mm256_mul_pd(nz, oz));
+        __m256d t = _mm256_div_pd(_mm256_sub_pd(_mm256_loadu_pd(pk->plane), on), dn);
+        __m256d hx = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), _mm256_loadu_pd(pk->qx));
+        __m256d hy = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), _mm256_loadu_pd(pk->qy));
+        __m256d hz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), _mm256_loadu_pd(pk->qz));
+        __m256d a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_loadu_pd(pk->ax)),
+                                                _mm256_mul_pd(hy, _mm256_loadu_pd(pk->ay))),
+                                  _mm256_mul_pd(hz, _mm256_loadu_pd(pk->az)));
+        __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_loadu_pd(pk->bx)),
+                                                _mm256_mul_pd(hy, _mm256_loadu_pd(pk->by))),
+                                  _mm256_mul_pd(hz, _mm256_loadu_pd(pk->bz)));
+        /* Ordered comparisons: a NaN (an unused lane's 0/0, a ray in the
+         * plane) fails every one. */
+        __m256d ok = _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ), _mm256_cmp_pd(t, m, _CMP_LT_OQ));
+        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ),
+                                              _mm256_cmp_pd(a, one, _CMP_LE_OQ)));
+        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
+                                              _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
+        m = _mm256_blendv_pd(m, t, ok);
+        mi = _mm256_castpd_si256(_mm256_blendv_pd(
+            _mm256_castsi256_pd(mi), _mm256_loadu_pd((const double *)(const void *)pk->prim), ok));
+    }
+    __m256d lo2 = _mm256_min_pd(m, _mm256_permute_pd(m, 0x5));
+    __m256d lo4 = _mm256_min_pd(lo2, _mm256_permute2f128_pd(lo2, lo2, 0x1));
+    double t = _mm256_cvtsd_f64(lo4);
+    /* Every lane started at *best: a lane below it holds a hit. */
+    unsigned mask = (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(m, lo4, _CMP_EQ_OQ));
+    int lane = __builtin_ctz(mask | 0x10u) & 3;
+    int64_t lanes[RT_PACKET];
+    _mm256_storeu_si256((__m256i *)(void *)lanes, mi);
+    int32_t closer = -(int32_t)(t < *best);
+    *best_i = (closer & (int32_t)lanes[lane]) | (~closer & *best_i);
+    *best = t < *best ? t : *best;
+}
+
+/* rt_sphere_t's arithmetic in scalar SSE: the same numbers, with selects
+ * where the compiler makes branches of the C version's conditions. Since
+ * t1 = h - sq <= h + sq = t2 also in floating point, the nearer valid root
+ * is t1 if t1 > tmin, else t2, kept if it is below tmax. */
+__attribute__((target("avx2"))) static inline double sphere_t_avx2(const rt_sphere *s, rt_ray r,
+                                                                    double tmin, double tmax)
+{
+    vec3 oc = vec3_sub(s->center, r.origin);
+    double h = vec3_dot(r.dir, oc);
+    double c = vec3_length_sq(oc) - s->radius * s->radius;
+    __m128d disc = _mm_set_sd(h * h - c), zero = _mm_setzero_pd(), hv = _mm_set_sd(h);
+    __m128d sq = _mm_sqrt_sd(zero, _mm_max_sd(disc, zero)); /* max gives 0 for a NaN disc */
+    __m128d t1 = _mm_sub_sd(hv, sq), t2 = _mm_add_sd(hv, sq), lo = _mm_set_sd(tmin);
+    __m128d t = _mm_blendv_pd(t2, t1, _mm_cmp_sd(t1, lo, _CMP_GT_OQ));
+    __m128d ok = _mm_and_pd(_mm_cmp_sd(disc, zero, _CMP_GE_OQ),
+                            _mm_and_pd(_mm_cmp_sd(t, lo, _CMP_GT_OQ),
+                                       _mm_cmp_sd(t, _mm_set_sd(tmax), _CMP_LT_OQ)));
+    return _mm_cvtsd_f64(_mm_blendv_pd(_mm_set_sd(HUGE_VAL), t, ok));
+}
+#endif
+
 /* Every primitive of leaf nd: its packets of quads, then its spheres. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void leaf_closest(const rt_bvh *bvh, const rt_prim *prims, const rt_bvh_node *nd,
-                                rt_ray r, double tmin, double *best, int *best_i)
+                                rt_ray r, double tmin, double *best, int *best_i, bool avx2)
 {
     int n_packets = (nd->n_quads + RT_PACKET - 1) / RT_PACKET;
-    packets_closest(&bvh->packets[nd->packet], n_packets, r, tmin, best, best_i);
+#ifdef RT_BVH_AVX2
+    if (avx2)
+        packets_closest_avx2(&bvh->packets[nd->packet], n_packets, r, tmin, best, best_i);
+    else
+#endif
+        packets_closest(&bvh->packets[nd->packet], n_packets, r, tmin, best, best_i);
     /* Conditional moves, not branches: which candidate wins is
      * unpredictable. */
     for (int i = nd->first + nd->n_quads; i < nd->first + nd->count; i++) {
+#ifdef RT_BVH_AVX2
+        double t = avx2 ? sphere_t_avx2(&prims[i].as.sphere, r, tmin, *best)
+                        : rt_sphere_t(&prims[i].as.sphere, r, tmin, *best);
+#else
         double t = rt_sphere_t(&prims[i].as.sphere, r, tmin, *best);
+#endif
         int32_t closer = -(int32_t)(t < *best);
         *best_i = (closer & i) | (~closer & *best_i);
         *best = t < *best ? t : *best;
@@ -347,7 +440,7 @@ static inline void leaf_closest(const rt_bvh *bvh, const rt_prim *prims, const r
 __attribute__((always_inline))
 #endif
 static inline double closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double tmin,
-                             double tmax, int *index)
+                             double tmax, int *index, bool avx2)
 {
     int best_i = -1;
     double best = tmax;
@@ -356,7 +449,7 @@ static inline double closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, 
      * the slab test only culls, so skipping it changes no answer, and a
      * ray inside a closed room always meets the box anyway. */
     if (bvh->nodes[0].count > 0) {
-        leaf_closest(bvh, prims, &bvh->nodes[0], r, tmin, &best, &best_i);
+        leaf_closest(bvh, prims, &bvh->nodes[0], r, tmin, &best, &best_i, avx2);
         *index = best_i;
         return best_i >= 0 ? best : HUGE_VAL;
     }
@@ -379,7 +472,7 @@ static inline double closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, 
                 node = near;
                 continue;
             }
-            leaf_closest(bvh, prims, nd, r, tmin, &best, &best_i);
+            leaf_closest(bvh, prims, nd, r, tmin, &best, &best_i, avx2);
         }
         if (sp == 0)
             break;
@@ -390,11 +483,11 @@ static inline double closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, 
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target("avx2"))) static double closest_avx2(const rt_bvh *bvh, const rt_prim *prims,
+__attribute__((target("avx2"), flatten)) static double closest_avx2(const rt_bvh *bvh, const rt_prim *prims,
                                                            rt_ray r, double tmin, double tmax,
                                                            int *index)
 {
-    return closest(bvh, prims, r, tmin, tmax, index);
+    return closest(bvh, prims, r, tmin, tmax, index, true);
 }
 #endif
 
@@ -402,10 +495,10 @@ __attribute__((target("avx2"))) static double closest_avx2(const rt_bvh *bvh, co
 __attribute__((always_inline))
 #endif
 static inline bool hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double tmin,
-                       double tmax, rt_hit *h)
+                       double tmax, rt_hit *h, bool avx2)
 {
     int i;
-    double t = closest(bvh, prims, *r, tmin, tmax, &i);
+    double t = closest(bvh, prims, *r, tmin, tmax, &i, avx2);
     if (i < 0)
         return false;
     rt_prim_hit_record(&prims[i], i, *r, t, h);
@@ -421,15 +514,15 @@ __attribute__((noinline))
 static bool hit_base(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double tmin,
                      double tmax, rt_hit *h)
 {
-    return hit(bvh, prims, r, tmin, tmax, h);
+    return hit(bvh, prims, r, tmin, tmax, h, false);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target("avx2"))) static bool hit_avx2(const rt_bvh *bvh, const rt_prim *prims,
+__attribute__((target("avx2"), flatten)) static bool hit_avx2(const rt_bvh *bvh, const rt_prim *prims,
                                                      const rt_ray *r, double tmin, double tmax,
                                                      rt_hit *h)
 {
-    return hit(bvh, prims, r, tmin, tmax, h);
+    return hit(bvh, prims, r, tmin, tmax, h, true);
 }
 #endif
 
@@ -443,6 +536,103 @@ bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double
     return hit_base(bvh, prims, r, tmin, tmax, h);
 }
 
+#ifdef RT_BVH_AVX2
+/* The leaf at the root against four rays, one per lane: every quad of
+ * every packet and then every sphere, broadcast to the four lanes. The
+ * arithmetic is rt_quad_t's and rt_sphere_t's, expression by expression
+ * (no FMA), so every lane's distance is the scalar one bit for bit; each
+ * lane keeps its nearest hit so far by blends, strictly nearer wins. */
+__attribute__((target("avx2"))) static unsigned hit4_leaf_avx2(const rt_bvh *bvh,
+                                                                const rt_prim *prims,
+                                                                const rt_ray r[RT_BVH_LANES],
+                                                                double tmin, double tmax,
+                                                                rt_hit h[RT_BVH_LANES])
+{
+    const __m256d ox = _mm256_setr_pd(r[0].origin.x, r[1].origin.x, r[2].origin.x, r[3].origin.x),
+                  oy = _mm256_setr_pd(r[0].origin.y, r[1].origin.y, r[2].origin.y, r[3].origin.y),
+                  oz = _mm256_setr_pd(r[0].origin.z, r[1].origin.z, r[2].origin.z, r[3].origin.z),
+                  dx = _mm256_setr_pd(r[0].dir.x, r[1].dir.x, r[2].dir.x, r[3].dir.x),
+                  dy = _mm256_setr_pd(r[0].dir.y, r[1].dir.y, r[2].dir.y, r[3].dir.y),
+                  dz = _mm256_setr_pd(r[0].dir.z, r[1].dir.z, r[2].dir.z, r[3].dir.z),
+                  lo = _mm256_set1_pd(tmin), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    __m256d best = _mm256_set1_pd(tmax);
+    __m256d best_i = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    const rt_bvh_node *nd = &bvh->nodes[0];
+    const rt_quad_packet *pk = &bvh->packets[nd->packet];
+    for (int q = 0; q < nd->n_quads; q++) {
+        const rt_quad_packet *p = &pk[q / RT_PACKET];
+        int j = q % RT_PACKET;
+        __m256d nx = _mm256_set1_pd(p->nx[j]), ny = _mm256_set1_pd(p->ny[j]),
+                nz = _mm256_set1_pd(p->nz[j]);
+        __m256d dn = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)),
+                                   _mm256_mul_pd(nz, dz));
+        __m256d on = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, ox), _mm256_mul_pd(ny, oy)),
+                                   _mm256_mul_pd(nz, oz));
+        __m256d t = _mm256_div_pd(_mm256_sub_pd(_mm256_set1_pd(p->plane[j]), on), dn);
+        __m256d hx = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), _mm256_set1_pd(p->qx[j]));
+        __m256d hy = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), _mm256_set1_pd(p->qy[j]));
+        __m256d hz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), _mm256_set1_pd(p->qz[j]));
+        __m256d a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_set1_pd(p->ax[j])),
+                                                _mm256_mul_pd(hy, _mm256_set1_pd(p->ay[j]))),
+                                  _mm256_mul_pd(hz, _mm256_set1_pd(p->az[j])));
+        __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_set1_pd(p->bx[j])),
+                                                _mm256_mul_pd(hy, _mm256_set1_pd(p->by[j]))),
+                                  _mm256_mul_pd(hz, _mm256_set1_pd(p->bz[j])));
+        __m256d ok = _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ), _mm256_cmp_pd(t, best, _CMP_LT_OQ));
+        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ),
+                                              _mm256_cmp_pd(a, one, _CMP_LE_OQ)));
+        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
+                                              _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
+        best = _mm256_blendv_pd(best, t, ok);
+        best_i = _mm256_blendv_pd(best_i, _mm256_castsi256_pd(_mm256_set1_epi64x(p->prim[j])), ok);
+    }
+    for (int i = nd->first + nd->n_quads; i < nd->first + nd->count; i++) {
+        const rt_sphere *s = &prims[i].as.sphere;
+        __m256d cx = _mm256_sub_pd(_mm256_set1_pd(s->center.x), ox),
+                cy = _mm256_sub_pd(_mm256_set1_pd(s->center.y), oy),
+                cz = _mm256_sub_pd(_mm256_set1_pd(s->center.z), oz);
+        __m256d hh = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, cx), _mm256_mul_pd(dy, cy)),
+                                   _mm256_mul_pd(dz, cz));
+        __m256d c = _mm256_sub_pd(
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(cx, cx), _mm256_mul_pd(cy, cy)), _mm256_mul_pd(cz, cz)),
+            _mm256_set1_pd(s->radius * s->radius));
+        __m256d disc = _mm256_sub_pd(_mm256_mul_pd(hh, hh), c);
+        __m256d sq = _mm256_sqrt_pd(_mm256_max_pd(disc, zero)); /* max gives 0 for a NaN disc */
+        __m256d t1 = _mm256_sub_pd(hh, sq), t2 = _mm256_add_pd(hh, sq);
+        __m256d t = _mm256_blendv_pd(t2, t1, _mm256_cmp_pd(t1, lo, _CMP_GT_OQ));
+        __m256d ok = _mm256_and_pd(_mm256_cmp_pd(disc, zero, _CMP_GE_OQ),
+                                   _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ),
+                                                 _mm256_cmp_pd(t, best, _CMP_LT_OQ)));
+        best = _mm256_blendv_pd(best, t, ok);
+        best_i = _mm256_blendv_pd(best_i, _mm256_castsi256_pd(_mm256_set1_epi64x(i)), ok);
+    }
+    double ts[RT_BVH_LANES];
+    int64_t is[RT_BVH_LANES];
+    _mm256_storeu_pd(ts, best);
+    _mm256_storeu_si256((__m256i *)(void *)is, _mm256_castpd_si256(best_i));
+    unsigned mask = 0;
+    for (int k = 0; k < RT_BVH_LANES; k++)
+        if (is[k] >= 0) {
+            rt_prim_hit_record(&prims[is[k]], (int)is[k], r[k], ts[k], &h[k]);
+            mask |= 1u << k;
+        }
+    return mask;
+}
+#endif
+
+unsigned rt_bvh_hit4(const rt_bvh *bvh, const rt_prim *prims, const rt_ray r[RT_BVH_LANES],
+                     double tmin, double tmax, rt_hit h[RT_BVH_LANES])
+{
+#ifdef RT_BVH_AVX2
+    if (bvh->nodes[0].count > 0 && __builtin_cpu_supports("avx2"))
+        return hit4_leaf_avx2(bvh, prims, r, tmin, tmax, h);
+#endif
+    unsigned mask = 0;
+    for (int k = 0; k < RT_BVH_LANES; k++)
+        mask |= (unsigned)rt_bvh_hit(bvh, prims, &r[k], tmin, tmax, &h[k]) << k;
+    return mask;
+}
+
 double rt_bvh_closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double tmin, double tmax,
                       int *index)
 {
@@ -450,7 +640,7 @@ double rt_bvh_closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double 
     if (__builtin_cpu_supports("avx2"))
         return closest_avx2(bvh, prims, r, tmin, tmax, index);
 #endif
-    return closest(bvh, prims, r, tmin, tmax, index);
+    return closest(bvh, prims, r, tmin, tmax, index, false);
 }
 
 double rt_prims_closest(const rt_prim *prims, int n, rt_ray r, double tmin, double tmax, int *index)

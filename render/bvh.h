@@ -86,6 +86,21 @@ double rt_bvh_closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double 
 bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
                 rt_hit *h);
 
+/* Rays traced together by rt_bvh_hit4. */
+#define RT_BVH_LANES 4
+
+/* rt_bvh_hit for RT_BVH_LANES rays at once: h[k] is filled in for every
+ * ray r[k] that meets a primitive in (tmin, tmax), and bit k of the result
+ * is set for it. Each ray gets the same distance and hit record as from
+ * rt_bvh_hit (on an exact tie between two primitives either may be
+ * reported). For a tree whose root is a leaf (a small scene such as the
+ * Cornell box), processors with AVX2 test each primitive against the four
+ * rays in one vector instruction, four independent computations where a
+ * single ray's test is one long dependent chain; otherwise the rays are
+ * traced one by one. Callers with fewer rays repeat one of them. */
+unsigned rt_bvh_hit4(const rt_bvh *bvh, const rt_prim *prims, const rt_ray r[RT_BVH_LANES],
+                     double tmin, double tmax, rt_hit h[RT_BVH_LANES]);
+
 /* The same answer by testing every primitive: the reference for the BVH
  * tests. */
 double rt_prims_closest(const rt_prim *prims, int n, rt_ray r, double tmin, double tmax, int *index);

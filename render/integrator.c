@@ -149,40 +149,65 @@ static double diffuse_direction(const rt_scene *s, const rt_path_settings *ps, c
     return mixture_sample(s, ps, h, sr, rng, dir);
 }
 
+bool rt_path_steppable(const rt_path_settings *ps)
+{
+    return ps->strategy != RT_LIGHT && ps->strategy != RT_MIS;
+}
+
+rt_path_state rt_path_begin(const rt_path_settings *ps, rt_ray r)
+{
+    rt_path_state p = {r, vec3_make(0.0, 0.0, 0.0), vec3_make(1.0, 1.0, 1.0), 0, ps->max_depth <= 0};
+    return p;
+}
+
+void rt_path_step(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
+                  const rt_hit *h, mc_rng *rng)
+{
+    if (!h) {
+        p->L = vec3_add(p->L, vec3_mul(p->beta, rt_scene_background(s)));
+        p->done = true;
+        return;
+    }
+    const rt_material *m = rt_scene_material(s, h->material);
+    p->L = vec3_add(p->L, vec3_mul(p->beta, rt_material_emitted(m, h)));
+    rt_scatter sr;
+    if (!rt_material_scatter(m, p->ray, h, rng, &sr)) {
+        p->done = true;
+        return;
+    }
+    if (sr.specular) {
+        p->beta = vec3_mul(p->beta, sr.attenuation);
+        p->ray = sr.ray;
+    } else {
+        vec3 dir;
+        double pd = diffuse_direction(s, ps, h, &sr, rng, &dir);
+        double sp = rt_material_scattering_pdf(m, h, dir);
+        /* Below the surface the integrand is 0: nothing more to add. */
+        if (!(sp > 0.0)) {
+            p->done = true;
+            return;
+        }
+        p->beta = vec3_scale(vec3_mul(p->beta, sr.attenuation), sp / pd);
+        p->ray = rt_ray_make(h->p, dir);
+    }
+    /* The flag is tested here too so that, off, the call is skipped. */
+    if (ps->russian_roulette && !roulette(ps, p->depth, &p->beta, rng))
+        p->done = true;
+    else if (++p->depth >= ps->max_depth)
+        p->done = true;
+}
+
 static vec3 book_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
                           uint64_t *segments)
 {
-    vec3 L = vec3_make(0.0, 0.0, 0.0), beta = vec3_make(1.0, 1.0, 1.0);
-    for (int depth = 0; depth < ps->max_depth; depth++) {
+    rt_path_state p = rt_path_begin(ps, r);
+    while (!p.done) {
         rt_hit h;
         ++*segments;
-        if (!rt_scene_hit(s, r, HUGE_VAL, &h)) {
-            L = vec3_add(L, vec3_mul(beta, rt_scene_background(s)));
-            break;
-        }
-        const rt_material *m = rt_scene_material(s, h.material);
-        L = vec3_add(L, vec3_mul(beta, rt_material_emitted(m, &h)));
-        rt_scatter sr;
-        if (!rt_material_scatter(m, r, &h, rng, &sr))
-            break;
-        if (sr.specular) {
-            beta = vec3_mul(beta, sr.attenuation);
-            r = sr.ray;
-        } else {
-            vec3 dir;
-            double p = diffuse_direction(s, ps, &h, &sr, rng, &dir);
-            double sp = rt_material_scattering_pdf(m, &h, dir);
-            /* Below the surface the integrand is 0: nothing more to add. */
-            if (!(sp > 0.0))
-                break;
-            beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp / p);
-            r = rt_ray_make(h.p, dir);
-        }
-        /* The flag is tested here too so that, off, the call is skipped. */
-        if (ps->russian_roulette && !roulette(ps, depth, &beta, rng))
-            break;
+        bool hit = rt_scene_hit(s, p.ray, HUGE_VAL, &h);
+        rt_path_step(s, ps, &p, hit ? &h : NULL, rng);
     }
-    return L;
+    return p.L;
 }
 
 /* --- next-event estimation ---------------------------------------------- */

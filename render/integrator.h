@@ -75,4 +75,29 @@ extern const char *const rt_strategy_names[];
 vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
                  uint64_t *segments);
 
+/* The book's integrator one segment at a time, so that a caller can
+ * trace the segments of several paths together (rt_scene_hit4): a path
+ * is begun with its camera ray, then, while it is not done, its ray is
+ * traced and the result handed to rt_path_step. The result is that of
+ * rt_radiance, number for number, for the strategies where
+ * rt_path_steppable is true (uniform, cosine, mixture). */
+typedef struct rt_path_state {
+    rt_ray ray; /* the next segment to trace */
+    vec3 L;     /* radiance gathered so far */
+    vec3 beta;  /* throughput: the weight of what comes back along ray */
+    int depth;  /* segments traced so far */
+    bool done;  /* L is final */
+} rt_path_state;
+
+/* True when the strategy runs the book's integrator (no shadow rays). */
+bool rt_path_steppable(const rt_path_settings *ps);
+
+/* A path starting along r (done at once when max_depth is 0). */
+rt_path_state rt_path_begin(const rt_path_settings *ps, rt_ray r);
+
+/* Advances p by the segment p->ray just traced: h is its hit, or NULL if
+ * it left the scene. Draws from rng as rt_radiance does at that point. */
+void rt_path_step(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
+                  const rt_hit *h, mc_rng *rng);
+
 #endif /* RT_INTEGRATOR_H */

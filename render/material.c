@@ -113,35 +113,26 @@ static void scatter_glass(const rt_material *m, rt_ray in, const rt_hit *h, mc_r
     s->ray = rt_ray_make(h->p, vec3_normalize(dir));
 }
 
-bool rt_material_scatter(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
-                         rt_scatter *s)
+bool rt_material_scatter_specular(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
+                                  rt_scatter *s)
 {
-    switch (m->kind) {
-    case RT_MAT_LIGHT:
-        return false;
-    case RT_MAT_LAMBERT:
-        s->specular = false;
-        s->attenuation = m->albedo;
-        s->normal = h->normal;
-        return true;
-    case RT_MAT_METAL: {
-        vec3 dir = rt_reflect(in.dir, h->normal);
-        if (m->fuzz > 0.0) {
-            double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-            dir = vec3_add(dir, vec3_scale(smp_uniform_sphere_sample(u1, u2), m->fuzz));
-            /* Fuzz may push the ray under the surface: absorbed, as in
-             * the first book. */
-            if (!(vec3_dot(dir, h->normal) > 0.0))
-                return false;
-        }
-        s->specular = true;
-        s->attenuation = m->albedo;
-        s->ray = rt_ray_make(h->p, vec3_normalize(dir));
-        return true;
-    }
-    case RT_MAT_DIELECTRIC:
+    if (m->kind == RT_MAT_DIELECTRIC) {
         scatter_glass(m, in, h, rng, s);
         return true;
     }
-    return false;
+    if (m->kind != RT_MAT_METAL)
+        return rt_material_scatter(m, in, h, rng, s); /* light, Lambert */
+    vec3 dir = rt_reflect(in.dir, h->normal);
+    if (m->fuzz > 0.0) {
+        double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+        dir = vec3_add(dir, vec3_scale(smp_uniform_sphere_sample(u1, u2), m->fuzz));
+        /* Fuzz may push the ray under the surface: absorbed, as in the
+         * first book. */
+        if (!(vec3_dot(dir, h->normal) > 0.0))
+            return false;
+    }
+    s->specular = true;
+    s->attenuation = m->albedo;
+    s->ray = rt_ray_make(h->p, vec3_normalize(dir));
+    return true;
 }

@@ -74,11 +74,28 @@ static inline vec3 rt_material_emitted(const rt_material *m, const rt_hit *h)
     return h->front_face ? m->emission : vec3_make(0.0, 0.0, 0.0);
 }
 
+/* rt_material_scatter for metal and glass (the specular kinds). */
+bool rt_material_scatter_specular(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
+                                  rt_scatter *s);
+
 /* Fills *s for the ray `in` scattered at h; returns false when the
  * material absorbs it (a light, or fuzzed metal sent below the surface).
- * Draws uniforms from rng only for specular events. */
-bool rt_material_scatter(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
-                         rt_scatter *s);
+ * Draws uniforms from rng only for specular events. Inline, with the
+ * diffuse case first: it follows every hit, and most hits in the Cornell
+ * box are diffuse. */
+static inline bool rt_material_scatter(const rt_material *m, rt_ray in, const rt_hit *h,
+                                       mc_rng *rng, rt_scatter *s)
+{
+    if (m->kind == RT_MAT_LAMBERT) {
+        s->specular = false;
+        s->attenuation = m->albedo;
+        s->normal = h->normal;
+        return true;
+    }
+    if (m->kind == RT_MAT_LIGHT)
+        return false;
+    return rt_material_scatter_specular(m, in, h, rng, s);
+}
 
 /* The chapter-3 scattering pdf s(direction) of a diffuse material at h for
  * the unit direction d: max(0, cos theta) / pi with theta measured from the

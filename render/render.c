@@ -72,6 +72,21 @@ static double in_cell(uint64_t i, uint64_t n, double u)
     return x < 1.0 ? x : nextafter(1.0, 0.0);
 }
 
+/* The camera ray of sample k of pixel (x, y): a point of its cell c while
+ * k < m (c then moves on by the stride), a uniform point after. The two
+ * uniforms come first from the pixel's stream. */
+static rt_ray sample_ray(const rt_render_job *job, const jitter *jt, int x, int y, uint64_t k,
+                         uint64_t *c, mc_rng *rng)
+{
+    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng), jx = u1, jy = u2;
+    if (k < jt->m) {
+        jx = in_cell(*c % jt->sx, jt->sx, u1);
+        jy = in_cell(*c / jt->sx, jt->sy, u2);
+        *c = *c + jt->stride >= jt->m ? *c + jt->stride - jt->m : *c + jt->stride;
+    }
+    return rt_camera_ray(&job->camera, (double)x + jx, (double)y + jy);
+}
+
 /* Samples [k0, k1) of every pixel of row y; c0 is the cell of sample k0. */
 static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
                        int y, uint64_t k0, uint64_t k1, uint64_t c0, uint64_t *segments,
@@ -84,18 +99,89 @@ static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams,
         rt_pixel *px = &img->px[idx];
         uint64_t c = c0;
         for (uint64_t k = k0; k < k1; k++) {
-            double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng), jx = u1, jy = u2;
-            if (k < jt->m) {
-                jx = in_cell(c % jt->sx, jt->sx, u1);
-                jy = in_cell(c / jt->sx, jt->sy, u2);
-                c = c + jt->stride >= jt->m ? c + jt->stride - jt->m : c + jt->stride;
-            }
-            rt_ray r = rt_camera_ray(&job->camera, (double)x + jx, (double)y + jy);
+            rt_ray r = sample_ray(job, jt, x, y, k, &c, &rng);
             vec3 L = rt_radiance(job->scene, &job->path, r, &rng, segments);
             if (!rt_pixel_add(px, L))
                 ++*dropped;
         }
         streams[idx] = rng;
+    }
+}
+
+/* One lane of render_row4: the pixel it works on, that pixel's stream and
+ * next sample, and the path of the current sample. */
+typedef struct lane {
+    int x;      /* -1: idle */
+    uint64_t k, c;
+    mc_rng rng;
+    rt_path_state path;
+} lane;
+
+/* Gives lane l pixel x of row y from sample k0 on (x == w: none left). */
+static void lane_take(lane *l, const rt_render_job *job, const jitter *jt, mc_rng *streams, int y,
+                      int x, int w, uint64_t k0, uint64_t c0)
+{
+    l->x = x < w ? x : -1;
+    if (l->x < 0)
+        return;
+    l->k = k0;
+    l->c = c0;
+    l->rng = streams[(size_t)y * (size_t)w + (size_t)x];
+    l->path = rt_path_begin(&job->path, sample_ray(job, jt, x, y, k0, &l->c, &l->rng));
+}
+
+/* render_row for the book's integrator, RT_BVH_LANES paths at a time:
+ * each lane takes a pixel and traces its samples one after the other,
+ * exactly as render_row does (the same stream, the same order, so the
+ * same numbers), and the lanes' rays are traced together by one
+ * rt_scene_hit4 per segment. A lane whose pixel is done takes the next
+ * pixel of the row. */
+static void render_row4(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
+                        int y, uint64_t k0, uint64_t k1, uint64_t c0, uint64_t *segments,
+                        uint64_t *dropped)
+{
+    int w = img->width, next = 0, active = 0;
+    lane lanes[RT_BVH_LANES];
+    for (int i = 0; i < RT_BVH_LANES; i++) {
+        lane_take(&lanes[i], job, jt, streams, y, next, w, k0, c0);
+        next += next < w;
+        active += lanes[i].x >= 0;
+    }
+    while (active > 0) {
+        rt_ray rays[RT_BVH_LANES];
+        rt_hit hits[RT_BVH_LANES];
+        int any = 0;
+        for (int i = 0; i < RT_BVH_LANES; i++)
+            if (lanes[i].x >= 0 && !lanes[i].path.done)
+                any = i;
+        /* Idle lanes and finished paths trace a copy of a live ray. */
+        for (int i = 0; i < RT_BVH_LANES; i++)
+            rays[i] = lanes[i].x >= 0 && !lanes[i].path.done ? lanes[i].path.ray : lanes[any].path.ray;
+        unsigned hit = rt_scene_hit4(job->scene, rays, HUGE_VAL, hits);
+        for (int i = 0; i < RT_BVH_LANES; i++) {
+            lane *l = &lanes[i];
+            if (l->x < 0)
+                continue;
+            if (!l->path.done) {
+                ++*segments;
+                rt_path_step(job->scene, &job->path, &l->path, (hit >> i) & 1u ? &hits[i] : NULL, &l->rng);
+            }
+            /* Finished samples go to the pixel; a sample of depth 0 is
+             * finished as soon as it begins. */
+            while (l->x >= 0 && l->path.done) {
+                size_t idx = (size_t)y * (size_t)w + (size_t)l->x;
+                if (!rt_pixel_add(&img->px[idx], l->path.L))
+                    ++*dropped;
+                if (++l->k < k1) {
+                    l->path = rt_path_begin(&job->path, sample_ray(job, jt, l->x, y, l->k, &l->c, &l->rng));
+                    continue;
+                }
+                streams[idx] = l->rng;
+                lane_take(l, job, jt, streams, y, next, w, k0, c0);
+                next += next < w;
+                active -= l->x < 0;
+            }
+        }
     }
 }
 
@@ -124,7 +210,10 @@ static void render_pass(const rt_render_job *job, rt_image *img, mc_rng *streams
             break;
         }
         uint64_t seg = 0, drop = 0, paths = (k1 - k0) * (uint64_t)img->width;
-        render_row(job, img, streams, jt, y, k0, k1, c0, &seg, &drop);
+        if (rt_path_steppable(&job->path) && !job->one_path_at_a_time)
+            render_row4(job, img, streams, jt, y, k0, k1, c0, &seg, &drop);
+        else
+            render_row(job, img, streams, jt, y, k0, k1, c0, &seg, &drop);
 #pragma omp atomic
         tot->segments += seg;
 #pragma omp atomic

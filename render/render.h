@@ -53,6 +53,11 @@ typedef struct rt_render_job {
     rt_progress_fn progress;
     void *progress_ctx;
     const atomic_int *cancel; /* may be NULL; nonzero stops the render */
+    /* The book's integrator (rt_path_steppable) traces RT_BVH_LANES paths
+     * together, one pixel per lane (rt_scene_hit4); true traces one path
+     * at a time instead: the same image bit for bit, kept as the
+     * reference the tests compare against. */
+    bool one_path_at_a_time;
 } rt_render_job;
 
 typedef struct rt_render_stats {

@@ -316,6 +316,12 @@ bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
     return rt_bvh_hit(&s->bvh, s->prims, &r, s->t_min, tmax, h);
 }
 
+unsigned rt_scene_hit4(const rt_scene *s, const rt_ray r[RT_BVH_LANES], double tmax,
+                       rt_hit h[RT_BVH_LANES])
+{
+    return rt_bvh_hit4(&s->bvh, s->prims, r, s->t_min, tmax, h);
+}
+
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
 {
     int i;

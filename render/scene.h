@@ -91,6 +91,11 @@ int rt_scene_build(rt_scene *s);
 /* The closest hit of r with t in (t_min, tmax), through the BVH. */
 bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
 
+/* rt_scene_hit for RT_BVH_LANES rays at once (rt_bvh_hit4): bit k of the
+ * result says whether r[k] hit, and then h[k] is its record. */
+unsigned rt_scene_hit4(const rt_scene *s, const rt_ray r[RT_BVH_LANES], double tmax,
+                       rt_hit h[RT_BVH_LANES]);
+
 /* The same by testing every flattened primitive (reference). */
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
 

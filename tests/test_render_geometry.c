@@ -161,6 +161,77 @@ static void check_bvh(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t 
     assert_true(hits > n_rays / 10);
 }
 
+/* rt_bvh_hit4 against rt_bvh_hit ray by ray: the same hit or miss, the
+ * same distance bit for bit, and the same record when the primitive is
+ * the same (on an exact tie another primitive at the same distance may
+ * win). */
+static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed)
+{
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    const rt_prim *prims = rt_scene_prims(s);
+    const rt_bvh *b = rt_scene_bvh(s);
+    int hits = 0;
+    for (int i = 0; i < n_batches; i++) {
+        rt_ray r[RT_BVH_LANES];
+        rt_hit h4[RT_BVH_LANES];
+        for (int k = 0; k < RT_BVH_LANES; k++)
+            r[k] = random_ray(&rng, lo, hi);
+        unsigned mask = rt_bvh_hit4(b, prims, r, 1e-3, HUGE_VAL, h4);
+        for (int k = 0; k < RT_BVH_LANES; k++) {
+            rt_hit h1;
+            bool hit = rt_bvh_hit(b, prims, &r[k], 1e-3, HUGE_VAL, &h1);
+            if (hit != (((mask >> k) & 1u) != 0))
+                fail_msg("batch %d lane %d: hit4 says %u, hit says %d", i, k, (mask >> k) & 1u, hit);
+            if (!hit)
+                continue;
+            hits++;
+            if (h4[k].t != h1.t)
+                fail_msg("batch %d lane %d: t %.17g against %.17g", i, k, h4[k].t, h1.t);
+            if (h4[k].prim != h1.prim) {
+                if (rt_prim_t(&prims[h4[k].prim], r[k], 1e-3, HUGE_VAL) != h1.t)
+                    fail_msg("batch %d lane %d: prim %d against %d", i, k, h4[k].prim, h1.prim);
+                continue;
+            }
+            assert_true(h4[k].p.x == h1.p.x && h4[k].p.y == h1.p.y && h4[k].p.z == h1.p.z);
+            assert_true(h4[k].normal.x == h1.normal.x && h4[k].normal.y == h1.normal.y &&
+                        h4[k].normal.z == h1.normal.z);
+            assert_int_equal(h4[k].front_face, h1.front_face);
+            assert_int_equal(h4[k].material, h1.material);
+        }
+    }
+    return hits;
+}
+
+/* The book scene (a root leaf: the four-lane vector test where AVX2 is
+ * there) with 2.5 x 10^5 batches of rays from all around and inside it,
+ * and the soup of test_bvh_matches_brute_force's kind (a deep tree: ray
+ * by ray). */
+static void test_bvh_hit4_matches_hit(void **state)
+{
+    (void)state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    int hits = check_hit4(s, 250000, v3(-100, -100, -900), v3(655, 655, 655), 16u);
+    assert_true(hits > 250000);
+    rt_scene_destroy(s);
+    mc_rng rng = mc_rng_derive(17u, 0u);
+    s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    for (int i = 0; i < 100; i++) {
+        vec3 c = v3(100 * mc_rng_uniform(&rng), 100 * mc_rng_uniform(&rng), 100 * mc_rng_uniform(&rng));
+        if (i % 2 == 0)
+            rt_scene_add(s, rt_scene_sphere(s, c, 5.0, m));
+        else
+            rt_scene_add(s, rt_scene_quad(s, c, v3(10, 0, 3), v3(0, 8, -2), m));
+    }
+    assert_int_equal(rt_scene_build(s), 0);
+    assert_true(rt_scene_bvh(s)->nodes[0].count == 0); /* not a leaf: the other path */
+    hits = check_hit4(s, 20000, v3(-20, -20, -20), v3(120, 120, 120), 18u);
+    printf("rt_bvh_hit4 = rt_bvh_hit on 10^6 + 8 x 10^4 rays (%d hits in the soup)\n", hits);
+    assert_true(hits > 8000);
+    rt_scene_destroy(s);
+}
+
 /* A soup of 400 random quads and spheres of very different sizes, then the
  * book scene: 2 x 10^5 + 10^6 rays. */
 static void test_bvh_matches_brute_force(void **state)
@@ -259,6 +330,7 @@ int main(void)
         cmocka_unit_test(test_instances_known),
         cmocka_unit_test(test_instances_flattened_match_tree),
         cmocka_unit_test(test_bvh_matches_brute_force),
+        cmocka_unit_test(test_bvh_hit4_matches_hit),
         cmocka_unit_test(test_bvh_degenerate_inputs),
         cmocka_unit_test(test_camera_geometry),
         cmocka_unit_test(test_scene_errors),

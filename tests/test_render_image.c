@@ -67,6 +67,47 @@ static void test_render_identical_for_any_thread_count(void **state)
     }
 }
 
+/* The four-lane tracing of the book's integrator against one path at a
+ * time: every pixel's sums, counts and drops equal bit for bit, and so do
+ * the totals, over scenes, strategies, roulette, depths 0 to 50, and a
+ * width that leaves lanes idle at the end of every row. */
+static void test_render_four_lanes_equal_one_path(void **state)
+{
+    (void)state;
+    static const char *const names[3] = {"book", "lambert", "furnace"};
+    static const rt_strategy strategies[3] = {RT_UNIFORM, RT_COSINE, RT_MIXTURE};
+    static const int depths[3] = {0, 1, 50};
+    int compared = 0;
+    for (int k = 0; k < 3; k++) {
+        rt_camera_params cp;
+        rt_scene *s = rt_scene_named(names[k], &cp);
+        assert_non_null(s);
+        for (int st = 0; st < 3; st++)
+            for (int d = 0; d < 3; d++) {
+                rt_image *a = rt_image_create(7, 5), *b = rt_image_create(7, 5);
+                rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, 7, 5));
+                job.spp = 5;
+                job.seed = 3u + (uint64_t)k;
+                job.path.strategy = strategies[st];
+                job.path.max_depth = depths[d];
+                job.path.russian_roulette = d == 2 && st == 2;
+                rt_render_stats sa, sb;
+                assert_int_equal(rt_render(&job, a, &sa), 0);
+                job.one_path_at_a_time = true;
+                assert_int_equal(rt_render(&job, b, &sb), 0);
+                assert_true(sa.paths == sb.paths && sa.segments == sb.segments && sa.dropped == sb.dropped);
+                if (memcmp(a->px, b->px, 35 * sizeof *a->px) != 0)
+                    fail_msg("%s, %s, depth %d: the four-lane image differs", names[k],
+                             rt_strategy_name(strategies[st]), depths[d]);
+                compared += (int)sa.segments;
+                rt_image_destroy(a);
+                rt_image_destroy(b);
+            }
+        rt_scene_destroy(s);
+    }
+    printf("four lanes = one path at a time over 27 renders (%d segments)\n", compared);
+}
+
 /* A 1 x 1 image whose pixel is half covered by a light of radiance 1 (the
  * seam runs down the middle of the pixel). With a perfect-square spp whose
  * root is even, the jittered grid puts exactly half the samples on each
@@ -268,6 +309,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_render_identical_for_any_thread_count),
+        cmocka_unit_test(test_render_four_lanes_equal_one_path),
         cmocka_unit_test(test_pixel_samples_stratified_and_counted),
         cmocka_unit_test(test_render_cancel_keeps_exact_count),
         cmocka_unit_test(test_gamma_known_values),
