@@ -87,13 +87,13 @@ static double d_sphere_reject(mc_rng *r, double p)
     return sum3(smp_uniform_sphere_sample_rejection(r));
 }
 
-/* The sphere-cone as a light sampler uses it: the cosine from the
- * distance, then the cone. */
+/* The sphere-cone as a light sampler uses it: 1 - cos theta_max from the
+ * distance, then the cap. */
 static double d_sphere_cone(mc_rng *r, double p)
 {
     double u1 = mc_rng_uniform(r), u2 = mc_rng_uniform(r);
-    double cos_max = smp_sphere_cone_cos_theta_max(p * p, 1.0);
-    return sum3(smp_uniform_cone_sample(u1, u2, cos_max));
+    double one_minus_cos = smp_sphere_cone_one_minus_cos(p * p, 1.0);
+    return sum3(smp_uniform_cap_sample(u1, u2, one_minus_cos));
 }
 
 static const bench_case cases[] = {

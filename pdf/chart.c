@@ -5,14 +5,22 @@
 #include <string.h>
 
 #include "mc/constants.h"
+#include "pdf/pdf.h"
 #include "samplers/cone.h"
 #include "samplers/planar.h"
 #include "samplers/spherical.h"
 
-/* Slack on the parallelogram's edge coordinates, as in pdf/pdf.c. */
-#define EDGE_TOL 1e-9
-/* Slack on a cone's rim in cos theta: a direction generated on the rim
- * comes back a few 1e-16 outside after the round trip through an ONB. */
+/* Slack on a cone's rim in cos theta when a direction is classified as
+ * in the cap: a direction generated on the rim comes back a few 1e-16
+ * outside after the round trip through an ONB, and the chart's frame
+ * (built from the normalized axis) need not be the pdf's to the last bit.
+ * Deliberately looser than PDF_CONE_RIM_TOL: that one widens the support
+ * of a density and so changes its integral, while this one only decides
+ * which chart cell a generated sample falls in (clamped to the cap's
+ * rectangle), so a looser value costs nothing and can never drop a sample
+ * that value() accepts. The edge slack, by contrast, is PDF_QUAD_EDGE_TOL
+ * itself: a direction goes to the quad's cells exactly when value() counts
+ * it as hitting the quad. */
 #define RIM_TOL 1e-12
 /* Halvings toward a singular corner: leaves a corner square of side 2^-40
  * (1e-12), whose mass is far below any tolerance of the callers. */
@@ -25,6 +33,7 @@ pdf_chart pdf_chart_spherical(vec3 axis, double cos_lo)
     c.kind = PDF_CHART_SPHERICAL;
     c.frame = onb_from_w(vec3_normalize(axis));
     c.cos_lo = cos_lo;
+    c.one_minus_cos_lo = 1.0 - cos_lo;
     return c;
 }
 
@@ -48,6 +57,7 @@ pdf_chart pdf_chart_quad_and_cap(vec3 origin, vec3 corner, vec3 u, vec3 v, vec3 
     c.kind = PDF_CHART_QUAD_AND_CAP;
     c.frame = onb_from_w(vec3_normalize(axis));
     c.cos_lo = smp_sphere_cone_cos_theta_max(vec3_length_sq(axis), radius);
+    c.one_minus_cos_lo = smp_sphere_cone_one_minus_cos(vec3_length_sq(axis), radius);
     return c;
 }
 
@@ -142,10 +152,11 @@ vec3 pdf_chart_direction(const pdf_chart *c, const double x[2], double *jacobian
     case PDF_CHART_QUAD_AND_CAP:
         if (x[0] < 1.0)
             return plane_direction(c, x[0], x[1], jacobian);
-        /* cos theta = 1 - (x - 1)(1 - cos_max), phi = 2 pi y. */
-        *jacobian = MC_2PI * (1.0 - c->cos_lo);
-        return onb_to_world(&c->frame, smp_spherical_direction(
-                                           1.0 - (x[0] - 1.0) * (1.0 - c->cos_lo), MC_2PI * x[1]));
+        /* 1 - cos theta = (x - 1) h, phi = 2 pi y: the cap sampler's own
+         * map with (u1, u2) = (y, x - 1), d omega = 2 pi h dx dy. */
+        *jacobian = MC_2PI * c->one_minus_cos_lo;
+        return onb_to_world(&c->frame,
+                            smp_uniform_cap_sample(x[1], x[0] - 1.0, c->one_minus_cos_lo));
     }
     *jacobian = 0.0;
     return vec3_make(0.0, 0.0, 1.0);
@@ -167,12 +178,13 @@ void pdf_chart_point(const pdf_chart *c, vec3 d, double x[2])
             x[0] = 3.0 + local.z, x[1] = 3.0 * smp_spherical_phi(local) / MC_2PI - 1.0;
         return;
     case PDF_CHART_QUAD_AND_CAP:
-        if (plane_coords(c, d, &s, &t) && s >= -EDGE_TOL && s <= 1.0 + EDGE_TOL && t >= -EDGE_TOL &&
-            t <= 1.0 + EDGE_TOL)
+        if (plane_coords(c, d, &s, &t) && s >= -PDF_QUAD_EDGE_TOL && s <= 1.0 + PDF_QUAD_EDGE_TOL &&
+            t >= -PDF_QUAD_EDGE_TOL && t <= 1.0 + PDF_QUAD_EDGE_TOL) {
             x[0] = fmin(fmax(s, 0.0), 1.0), x[1] = fmin(fmax(t, 0.0), 1.0);
-        else if (local.z >= c->cos_lo - RIM_TOL)
-            x[0] = fmin(1.0 + (1.0 - local.z) / (1.0 - c->cos_lo), 2.0),
-            x[1] = smp_spherical_phi(local) / MC_2PI;
+        } else if (local.z >= c->cos_lo - RIM_TOL) {
+            vec2 cap = smp_uniform_cap_invert(local, c->one_minus_cos_lo);
+            x[0] = fmin(1.0 + cap.y, 2.0), x[1] = cap.x;
+        }
         return;
     }
 }

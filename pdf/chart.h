@@ -47,6 +47,7 @@ typedef struct pdf_chart {
     onb frame; /* spherical: about frame.n; light plane: frame.n = toward; quad and cap: cone axis
                 */
     double cos_lo; /* spherical: lower end of cos theta; quad and cap: the cone's cos theta_max */
+    double one_minus_cos_lo; /* 1 - cos_lo; for the quad and cap, without cancellation */
     /* Light plane, quad and cap: the parallelogram corner + s u + t v seen
      * from origin, and its unit normal on the side away from origin. */
     vec3 origin, corner, u, v, toward;
@@ -62,8 +63,9 @@ pdf_chart pdf_chart_light_plane(vec3 origin, vec3 corner, vec3 u, vec3 v);
 
 /* The parallelogram beside the cone of the sphere (center, radius) seen
  * from `origin` outside it; cos theta_max = sqrt(1 - R^2 / d^2) computed
- * from the geometry by smp_sphere_cone_cos_theta_max, as pdf_toward_sphere
- * does, so that the cap ends where that pdf's cone does. The two must not
+ * from the geometry by smp_sphere_cone_cos_theta_max, and 1 - cos theta_max
+ * by smp_sphere_cone_one_minus_cos, as pdf_toward_sphere does, so that the
+ * cap ends where that pdf's cone does. The two must not
  * overlap as seen from origin. */
 pdf_chart pdf_chart_quad_and_cap(vec3 origin, vec3 corner, vec3 u, vec3 v, vec3 center,
                                  double radius);

@@ -15,23 +15,6 @@
 #include "samplers/planar.h"
 #include "samplers/sphere.h"
 
-/* How far outside [0, 1] an edge coordinate of the parallelogram may fall
- * and still count as a hit. A direction generated toward a point of the
- * edge, normalized, and intersected with the plane again comes back with a
- * rounding error of a few ulps times dist / |edge| (about 1e-12 for a light
- * 10^4 edge lengths away); without slack such a sample would get density
- * 0. The band this admits changes the density's integral by at most
- * 4e-9 relative, invisible next to any Monte Carlo error bar. */
-#define QUAD_EDGE_TOL 1e-9
-
-/* The same slack for the rim of a sphere's cone, in cos theta: generated
- * directions lie at least 2^-32 (1 - cos theta_max) inside the rim, but
- * after the round trip through the ONB their cosine carries an error of
- * a few 1e-16, which is larger for cones thinner than 1 - cos = 1e-6 (a
- * sphere seen at R / d < 1.4e-3). 1e-15 covers it; the band adds at most
- * 1e-15 / (1 - cos theta_max) to the integral. */
-#define CONE_RIM_TOL 1e-15
-
 /* Nesting depth beyond which pdf_valid declares a composite malformed. */
 #define MAX_DEPTH 16
 
@@ -77,6 +60,7 @@ pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius)
     p.as.sphere.frame = onb_from_w(dist_sq > 0.0 ? vec3_scale(axis, 1.0 / sqrt(dist_sq))
                                                  : vec3_make(0.0, 0.0, 1.0));
     p.as.sphere.cos_theta_max = smp_sphere_cone_cos_theta_max(dist_sq, radius);
+    p.as.sphere.one_minus_cos = smp_sphere_cone_one_minus_cos(dist_sq, radius);
     return p;
 }
 
@@ -114,8 +98,8 @@ static double quad_value(const pdf *p, vec3 d)
      * u x q = t (u x v), so dotting with w isolates s and t. */
     double s = vec3_dot(p->as.quad.w, vec3_cross(q, p->as.quad.v));
     double t = vec3_dot(p->as.quad.w, vec3_cross(p->as.quad.u, q));
-    if (!(s >= -QUAD_EDGE_TOL && s <= 1.0 + QUAD_EDGE_TOL && t >= -QUAD_EDGE_TOL &&
-          t <= 1.0 + QUAD_EDGE_TOL))
+    if (!(s >= -PDF_QUAD_EDGE_TOL && s <= 1.0 + PDF_QUAD_EDGE_TOL && t >= -PDF_QUAD_EDGE_TOL &&
+          t <= 1.0 + PDF_QUAD_EDGE_TOL))
         return 0.0;
     return smp_area_to_solid_angle(p->as.quad.inv_area, r * r, denom);
 }
@@ -127,20 +111,23 @@ static vec3 quad_generate(const pdf *p, mc_rng *rng)
     return vec3_normalize(vec3_sub(x, p->as.quad.origin));
 }
 
-/* Uniform in the cone: the cone sampler's constant density inside (taken at
- * its axis, which is always inside), 0 outside the rim. */
+/* Uniform in the cone: the cap sampler's constant density inside (taken at
+ * its axis, which is always inside), 0 outside the rim. The rim test uses
+ * the rounded cosine with its slack; the density uses 1 - cos theta_max
+ * carried without cancellation, so a far sphere's density is finite and
+ * accurate where 1 / (2 pi (1 - cos theta_max)) would be +inf. */
 static double sphere_value(const pdf *p, vec3 d)
 {
     double cos_max = p->as.sphere.cos_theta_max;
-    if (vec3_dot(d, p->as.sphere.frame.n) < cos_max - CONE_RIM_TOL)
+    if (vec3_dot(d, p->as.sphere.frame.n) < cos_max - PDF_CONE_RIM_TOL)
         return 0.0;
-    return smp_uniform_cone_pdf(vec3_make(0.0, 0.0, 1.0), cos_max);
+    return smp_uniform_cap_pdf(vec3_make(0.0, 0.0, 1.0), p->as.sphere.one_minus_cos);
 }
 
 static vec3 sphere_generate(const pdf *p, mc_rng *rng)
 {
     double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-    vec3 local = smp_uniform_cone_sample(u1, u2, p->as.sphere.cos_theta_max);
+    vec3 local = smp_uniform_cap_sample(u1, u2, p->as.sphere.one_minus_cos);
     return onb_to_world(&p->as.sphere.frame, local);
 }
 
@@ -261,11 +248,14 @@ static bool valid_at(const pdf *p, int depth)
                vec3_is_finite(p->as.quad.origin) && vec3_is_finite(p->as.quad.corner) && h != 0.0;
     }
     case PDF_TOWARD_SPHERE:
-        /* cos theta_max must stay below 1, or the cone (and the density's
-         * denominator 1 - cos theta_max) vanishes. */
+        /* 1 - cos theta_max must stay positive, or the cone (and the
+         * density's denominator) vanishes; only an underflowing R^2 / d^2
+         * (R / d below ~1e-154) gets there, or a denominator so small that
+         * the density overflows. */
         return isfinite(p->as.sphere.radius) && p->as.sphere.radius > 0.0 &&
                vec3_is_finite(p->as.sphere.origin) && vec3_is_finite(p->as.sphere.center) &&
-               p->as.sphere.cos_theta_max < 1.0;
+               p->as.sphere.one_minus_cos > 0.0 &&
+               isfinite(1.0 / (MC_2PI * p->as.sphere.one_minus_cos));
     case PDF_MIXTURE:
         if (!p->as.mixture.components ||
             !pdf_mixture_weights_valid(p->as.mixture.weights, p->as.mixture.n))

@@ -43,8 +43,8 @@ typedef enum pdf_kind {
 typedef struct pdf pdf;
 
 /* Build pdfs with the constructors below, never by hand: they precompute
- * the fields (frames, normals, the cone's cosine). Reading a field, as the
- * tests and the chart tools do, is fine. */
+ * the fields (frames, normals, the cone's cosine and 1 - cosine). Reading
+ * a field, as the tests and the chart tools do, is fine. */
 struct pdf {
     pdf_kind kind;
     union {
@@ -62,6 +62,8 @@ struct pdf {
             double radius;
             onb frame;            /* frame.n points from origin to center */
             double cos_theta_max; /* -1 when origin is inside or on the sphere */
+            double one_minus_cos; /* 1 - cos theta_max to full relative accuracy
+                                     (smp_sphere_cone_one_minus_cos); 2 inside */
         } sphere;
         struct {
             const pdf *const *components;
@@ -96,6 +98,9 @@ pdf pdf_toward_quad(vec3 origin, vec3 corner, vec3 u, vec3 v);
  * the sphere (center, radius > 0): cos theta_max = sqrt(1 - R^2 / d^2)
  * about the direction to center, value 1 / (2 pi (1 - cos theta_max))
  * inside the cone and 0 outside. Every such direction hits the sphere.
+ * 1 - cos theta_max is computed without cancellation (samplers/cone.h), so
+ * the value stays accurate to a few ulps for arbitrarily small or distant
+ * spheres (tested down to R / d = 1e-150).
  * From inside or on the sphere (d <= R) every direction hits it and the
  * pdf is uniform over the whole sphere, 1 / (4 pi) (the book's code
  * computes sqrt of a negative number there and returns NaN). */
@@ -126,6 +131,37 @@ double pdf_value(const pdf *p, vec3 d);
 /* A unit direction distributed according to p, drawing uniforms from rng. */
 vec3 pdf_generate(const pdf *p, mc_rng *rng);
 
+/* How far outside [0, 1] an edge coordinate of the parallelogram may fall
+ * and still count as a hit in pdf_toward_quad's value. A direction
+ * generated toward a point of the edge, normalized, and intersected with
+ * the plane again comes back with a rounding error of a few ulps times
+ * dist / |edge| (about 1e-12 for a light 10^4 edge lengths away); without
+ * slack such a sample would get density 0. The band this admits changes
+ * the density's integral by at most 4e-9 relative, invisible next to any
+ * Monte Carlo error bar. render/lights.h and pdf/chart.c use the same
+ * value: the renderer's densities must be the same bits as these, and the
+ * chart must classify a direction as on the light exactly when value()
+ * does. */
+#define PDF_QUAD_EDGE_TOL 1e-9
+
+/* The same slack for the rim of a sphere's cone, in cos theta: generated
+ * directions lie at least 2^-32 (1 - cos theta_max) inside the rim, but
+ * after the round trip through the ONB their cosine carries an error of
+ * a few 1e-16, which is larger for cones thinner than 1 - cos = 1e-6 (a
+ * sphere seen at R / d < 1.4e-3). 1e-15 covers it; the band adds at most
+ * 1e-15 / (1 - cos theta_max) to the integral, so it is kept as small as
+ * the round trip allows. It cannot be much smaller: a unit direction in
+ * doubles carries an absolute error of ~1e-16 per component, so no test
+ * in world coordinates resolves the rim more finely. (For cones with
+ * 1 - cos theta_max below 1e-15, R / d below ~4.5e-8, the band is wider
+ * than the cone itself: directions up to ~4.5e-8 rad off the axis get the
+ * cone's density. Only another pdf of a mixture draws such a direction,
+ * with a probability of at most its density times the band's solid angle
+ * 2 pi 1e-15.) render/lights.h uses the
+ * same value (same bits); pdf/chart.c deliberately uses a looser one for
+ * classifying samples (see there). */
+#define PDF_CONE_RIM_TOL 1e-15
+
 /* Tolerance on |sum of weights - 1| accepted by the checks below. A
  * weight sum off by 1e-9 biases an estimate by at most 1e-9 relative, far
  * below any Monte Carlo error bar, while still admitting sums such as ten
@@ -138,7 +174,8 @@ bool pdf_mixture_weights_valid(const double *weights, size_t n);
 
 /* True when p is well formed: a unit normal (1e-9), a parallelogram of
  * nonzero area whose plane does not hold the origin, a finite positive
- * radius, non-NULL components with valid weights, recursively (nesting
+ * radius and a cone whose density 1 / (2 pi (1 - cos theta_max)) is
+ * finite, non-NULL components with valid weights, recursively (nesting
  * deeper than 16 levels, which a cycle would produce, is invalid). For
  * debug assertions in callers; pdf_value and pdf_generate do not check. */
 bool pdf_valid(const pdf *p);

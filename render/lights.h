@@ -23,6 +23,7 @@
 #include "mc/onb.h"
 #include "mc/rng.h"
 #include "mc/vec3.h"
+#include "pdf/pdf.h"
 #include "render/shapes.h"
 #include "samplers/cone.h"
 #include "samplers/hemisphere.h"
@@ -64,25 +65,24 @@ typedef struct rt_lights_at {
     vec3 origin;
     double num[RT_LIGHTS_AT_MAX];     /* quad: normal . (q - origin) */
     vec3 axis[RT_LIGHTS_AT_MAX];      /* sphere: unit axis of the cone */
-    double cos_max[RT_LIGHTS_AT_MAX]; /* sphere: cos theta_max */
-    double cone[RT_LIGHTS_AT_MAX];    /* sphere: the cone's density inside it */
+    double cos_max[RT_LIGHTS_AT_MAX]; /* sphere: cos theta_max (the rim test) */
+    double one_minus_cos[RT_LIGHTS_AT_MAX]; /* sphere: 1 - cos theta_max, accurate */
+    double cone[RT_LIGHTS_AT_MAX];          /* sphere: the cone's density inside it */
 } rt_lights_at;
-
-/* pdf/pdf.c's slack on the parallelogram's edges and on the cone's rim
- * (see the reasons there); the values must match it. */
-#define RT_LIGHTS_QUAD_EDGE_TOL 1e-9
-#define RT_LIGHTS_CONE_RIM_TOL 1e-15
 
 /* The functions below are inline: the integrators call them at every
  * diffuse hit, and most of them are a few arithmetic operations. */
 
-/* The cone toward sphere light l from origin: its unit axis and
- * cos theta_max, as pdf_toward_sphere computes them. */
-static inline vec3 rt_light_cone_axis(const rt_light *l, vec3 origin, double *cos_max)
+/* The cone toward sphere light l from origin: its unit axis,
+ * cos theta_max and 1 - cos theta_max (without cancellation), as
+ * pdf_toward_sphere computes them. */
+static inline vec3 rt_light_cone_axis(const rt_light *l, vec3 origin, double *cos_max,
+                                      double *one_minus_cos)
 {
     vec3 axis = vec3_sub(l->center, origin);
     double dist_sq = vec3_length_sq(axis);
     *cos_max = smp_sphere_cone_cos_theta_max(dist_sq, l->radius);
+    *one_minus_cos = smp_sphere_cone_one_minus_cos(dist_sq, l->radius);
     return dist_sq > 0.0 ? vec3_scale(axis, 1.0 / sqrt(dist_sq)) : vec3_make(0.0, 0.0, 1.0);
 }
 
@@ -97,8 +97,8 @@ static inline void rt_lights_prepare(rt_lights_at *at, const rt_light *lights, i
         if (l->kind == RT_PRIM_QUAD) {
             at->num[i] = vec3_dot(l->normal, vec3_sub(l->q, origin));
         } else {
-            at->axis[i] = rt_light_cone_axis(l, origin, &at->cos_max[i]);
-            at->cone[i] = smp_uniform_cone_pdf(vec3_make(0.0, 0.0, 1.0), at->cos_max[i]);
+            at->axis[i] = rt_light_cone_axis(l, origin, &at->cos_max[i], &at->one_minus_cos[i]);
+            at->cone[i] = smp_uniform_cap_pdf(vec3_make(0.0, 0.0, 1.0), at->one_minus_cos[i]);
         }
     }
 }
@@ -115,7 +115,7 @@ static inline vec3 rt_lights_at_generate(const rt_lights_at *at, mc_rng *rng)
         return vec3_normalize(vec3_sub(x, at->origin));
     }
     onb frame = onb_from_w(at->axis[i]);
-    return onb_to_world(&frame, smp_uniform_cone_sample(u1, u2, at->cos_max[i]));
+    return onb_to_world(&frame, smp_uniform_cap_sample(u1, u2, at->one_minus_cos[i]));
 }
 
 /* pdf_toward_quad's value with its numerator normal . (q - origin) given. */
@@ -130,8 +130,8 @@ static inline double rt_light_quad_value(const rt_light *l, vec3 origin, double 
     vec3 q = vec3_sub(vec3_madd(origin, d, r), l->q);
     double s = vec3_dot(l->w, vec3_cross(q, l->v));
     double t = vec3_dot(l->w, vec3_cross(l->u, q));
-    if (!(s >= -RT_LIGHTS_QUAD_EDGE_TOL && s <= 1.0 + RT_LIGHTS_QUAD_EDGE_TOL &&
-          t >= -RT_LIGHTS_QUAD_EDGE_TOL && t <= 1.0 + RT_LIGHTS_QUAD_EDGE_TOL))
+    if (!(s >= -PDF_QUAD_EDGE_TOL && s <= 1.0 + PDF_QUAD_EDGE_TOL &&
+          t >= -PDF_QUAD_EDGE_TOL && t <= 1.0 + PDF_QUAD_EDGE_TOL))
         return 0.0;
     return smp_area_to_solid_angle(l->inv_area, r * r, denom);
 }
@@ -142,11 +142,11 @@ static inline double rt_lights_at_value(const rt_lights_at *at, vec3 d)
     double sum = 0.0;
     for (int i = 0; i < at->n; i++) {
         const rt_light *l = &at->lights[i];
-        /* pdf_toward_sphere's value: smp_uniform_cone_pdf of the direction
-         * in the cone's frame, whose z is d . axis. */
+        /* pdf_toward_sphere's value: 0 outside the rim (d . axis is the
+         * direction's cosine in the cone's frame), else the cap's density. */
         sum += l->kind == RT_PRIM_QUAD ? rt_light_quad_value(l, at->origin, at->num[i], d)
-               : vec3_dot(d, at->axis[i]) < at->cos_max[i] - RT_LIGHTS_CONE_RIM_TOL ? 0.0
-                                                                                     : at->cone[i];
+               : vec3_dot(d, at->axis[i]) < at->cos_max[i] - PDF_CONE_RIM_TOL ? 0.0
+                                                                               : at->cone[i];
     }
     return at->n > 0 ? sum / (double)at->n : 0.0;
 }

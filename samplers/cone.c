@@ -4,14 +4,47 @@
 #include <math.h>
 
 #include "mc/constants.h"
+#include "mc/trig.h"
 #include "samplers/spherical.h"
+
+/* 1 - w.z for a unit w. Near the axis 1 - z cancels (z is 1 rounded); the
+ * identity 1 - z = (1 - z^2) / (1 + z) = (x^2 + y^2) / (1 + z) carries the
+ * full relative accuracy of x and y instead. Below the equator 1 - z >= 1
+ * and the plain subtraction is exact to an ulp. */
+static double one_minus_z(vec3 w)
+{
+    return w.z > 0.0 ? (w.x * w.x + w.y * w.y) / (1.0 + w.z) : 1.0 - w.z;
+}
+
+vec3 smp_uniform_cap_sample(double u1, double u2, double one_minus_cos)
+{
+    /* The cap above cos theta_max has solid angle 2 pi h, linear in
+     * cos theta: 1 - cos theta is uniform on [0, h]. With t = 1 - cos theta,
+     * sin^2 theta = (1 - cos)(1 + cos) = t (2 - t), exact in t, so the
+     * direction keeps its angle even when cos theta rounds to 1. */
+    double t = u2 * one_minus_cos;
+    double s2 = t * (2.0 - t);
+    double sin_theta = sqrt(s2 > 0.0 ? s2 : 0.0);
+    double s, c;
+    mc_sincos_turn(u1, &s, &c);
+    return vec3_make(sin_theta * c, sin_theta * s, 1.0 - t);
+}
+
+double smp_uniform_cap_pdf(vec3 w, double one_minus_cos)
+{
+    return one_minus_cos > 0.0 && one_minus_z(w) <= one_minus_cos
+               ? 1.0 / (MC_2PI * one_minus_cos)
+               : 0.0;
+}
+
+vec2 smp_uniform_cap_invert(vec3 w, double one_minus_cos)
+{
+    return vec2_make(smp_spherical_phi(w) * MC_INV_2PI, one_minus_z(w) / one_minus_cos);
+}
 
 vec3 smp_uniform_cone_sample(double u1, double u2, double cos_theta_max)
 {
-    /* The cap above cos theta_max has solid angle 2 pi (1 - cos theta_max),
-     * linear in cos theta: cos theta is uniform on [cos theta_max, 1]. */
-    double z = 1.0 - u2 * (1.0 - cos_theta_max);
-    return smp_spherical_direction_turn(z, u1);
+    return smp_uniform_cap_sample(u1, u2, 1.0 - cos_theta_max);
 }
 
 double smp_uniform_cone_pdf(vec3 w, double cos_theta_max)
@@ -21,7 +54,7 @@ double smp_uniform_cone_pdf(vec3 w, double cos_theta_max)
 
 vec2 smp_uniform_cone_invert(vec3 w, double cos_theta_max)
 {
-    return vec2_make(smp_spherical_phi(w) * MC_INV_2PI, (1.0 - w.z) / (1.0 - cos_theta_max));
+    return smp_uniform_cap_invert(w, 1.0 - cos_theta_max);
 }
 
 double smp_sphere_cone_cos_theta_max(double dist_sq, double radius)
@@ -32,4 +65,16 @@ double smp_sphere_cone_cos_theta_max(double dist_sq, double radius)
     if (!(dist_sq > r2))
         return -1.0;
     return sqrt((dist_sq - r2) / dist_sq);
+}
+
+double smp_sphere_cone_one_minus_cos(double dist_sq, double radius)
+{
+    double r2 = radius * radius;
+    if (!(dist_sq > r2))
+        return 2.0;
+    /* 1 - cos = (1 - cos^2) / (1 + cos) = sin^2 theta_max / (1 + cos): a
+     * quotient of two accurate numbers (sin^2 = R^2 / d^2 to an ulp, and
+     * 1 + cos in [1, 2]), where 1 - cos subtracts two nearly equal ones. */
+    double sin2 = r2 / dist_sq;
+    return sin2 / (1.0 + sqrt((dist_sq - r2) / dist_sq));
 }

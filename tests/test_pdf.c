@@ -488,6 +488,99 @@ static void test_pdf_chi2(void **state)
     assert_true(all_ok);
 }
 
+/* --- a tiny, far sphere light ------------------------------------------- */
+
+/* Spheres seen at R / d = 1e-9, 1e-12 and 1e-150 from the scene's origin,
+ * 1.3e7 away along (3, 4, 12) (d = 13e6: the axis is not an axis of the
+ * frame). Before 1 - cos theta_max was carried without cancellation their
+ * cos theta_max was exactly 1 and the density +inf. */
+static const double tiny_ratios[] = {1e-9, 1e-12, 1e-150};
+enum { N_TINY = (int)(sizeof tiny_ratios / sizeof tiny_ratios[0]) };
+
+static pdf tiny_sphere(vec3 origin, double ratio)
+{
+    vec3 center = vec3_add(origin, vec3_make(3e6, 4e6, 12e6));
+    return pdf_toward_sphere(origin, center, ratio * 13e6);
+}
+
+/* 1 / (2 pi (1 - cos theta_max)) for the sphere of p, written
+ * independently of samplers/cone.c: d^2 from the axis center - origin (as
+ * the pdf forms it) and s = R^2 / d^2 in long double, then the series
+ * 1 - sqrt(1 - s) = s/2 + s^2/8 + s^3/16 (the next term is 1e-53 of the
+ * sum at s <= 1e-18). */
+static long double tiny_exact_value(const pdf *p)
+{
+    vec3 a = vec3_sub(p->as.sphere.center, p->as.sphere.origin);
+    long double ax = (long double)a.x, ay = (long double)a.y, az = (long double)a.z;
+    long double d2 = ax * ax + ay * ay + az * az;
+    long double r = (long double)p->as.sphere.radius, s = r * r / d2;
+    const long double two_pi = 6.283185307179586476925286766559005768L;
+    return 1 / (two_pi * (s / 2 + s * s / 8 + s * s * s / 16));
+}
+
+/* The density of p along its axis (within the cone), as a renderer would
+ * evaluate it. */
+typedef double (*tiny_value_fn)(const pdf *p, vec3 d);
+
+/* The negative control: 1 - cos theta_max by subtraction from the rounded
+ * cosine, the value before the fix. */
+static double tiny_value_subtracted(const pdf *p, vec3 d)
+{
+    return vec3_dot(d, p->as.sphere.frame.n) >= p->as.sphere.cos_theta_max - PDF_CONE_RIM_TOL
+               ? 1.0 / (MC_2PI * (1.0 - p->as.sphere.cos_theta_max))
+               : 0.0;
+}
+
+/* Whether f's value along the axis of every tiny sphere is finite and
+ * within 1e-12 relative of the exact density (deterministic). */
+static bool tiny_values_ok(const char *label, tiny_value_fn f, vec3 origin)
+{
+    bool ok = true;
+    for (int k = 0; k < N_TINY; k++) {
+        pdf p = tiny_sphere(origin, tiny_ratios[k]);
+        long double exact = tiny_exact_value(&p);
+        double got = f(&p, vec3_normalize(vec3_make(3.0, 4.0, 12.0)));
+        double rel = isfinite(got) ? (double)fabsl(((long double)got - exact) / exact)
+                                   : (double)INFINITY;
+        printf("tiny sphere %-10s R/d %.0e: value %.17g, exact %.17Lg, relative error %.3g\n",
+               label, tiny_ratios[k], got, exact, rel);
+        ok = ok && rel <= 1e-12;
+    }
+    return ok;
+}
+
+/* pdf_toward_sphere of a tiny far sphere: valid, its value along the axis
+ * the exact density to 1e-12 relative, 0 a microradian off the axis (far
+ * beyond the rim and its slack) and behind; 10^4 generated directions
+ * (seed 3360) are unit, finite, get the same nonzero density and lie
+ * within the cone, |d x axis| = sin(angle) <= R / d, up to 1e-15 for the
+ * rounding of a unit vector's components. */
+static void test_pdf_tiny_sphere(void **state)
+{
+    (void)state;
+    vec3 o = vec3_make(0.3, -0.2, 0.1);
+    assert_true(tiny_values_ok("pdf_value", pdf_value, o));
+    uint64_t seed = mc_test_seed(3360u);
+    for (int k = 0; k < N_TINY; k++) {
+        pdf p = tiny_sphere(o, tiny_ratios[k]);
+        assert_true(pdf_valid(&p));
+        vec3 axis = vec3_normalize(vec3_make(3.0, 4.0, 12.0));
+        double inside = pdf_value(&p, axis);
+        vec3 off = vec3_normalize(vec3_madd(axis, vec3_make(4.0, -3.0, 0.0), 1e-6 / 5.0));
+        assert_true(pdf_value(&p, off) == 0.0);
+        assert_true(pdf_value(&p, vec3_neg(axis)) == 0.0);
+        mc_rng rng = mc_rng_derive(seed, (uint64_t)k);
+        for (int i = 0; i < 10000; i++) {
+            vec3 d = pdf_generate(&p, &rng);
+            double sin_off = vec3_length(vec3_cross(d, axis));
+            if (!(vec3_is_finite(d) && fabs(vec3_length(d) - 1.0) <= 1e-15 &&
+                  pdf_value(&p, d) == inside && sin_off <= tiny_ratios[k] + 1e-15))
+                fail_msg("R/d %.0e: generated direction off the cone (sin %.3g, seed %llu)",
+                         tiny_ratios[k], sin_off, (unsigned long long)seed);
+        }
+    }
+}
+
 /* --- negative controls --------------------------------------------------- */
 
 /* The light pdf without its cosine: dist^2 / A instead of
@@ -592,6 +685,8 @@ static void test_pdf_negative_controls(void **state)
     for (int i = 0; i < M; i++)
         all &= negctl_record(t, bad[i].name, check_name[by[i]],
                              caught(&bad[i], by[i], mc_test_seed(3350u + (uint64_t)i)));
+    all &= negctl_record(t, "neg-tiny-sphere-subtracted", "tiny-sphere accuracy (1e-12)",
+                         !tiny_values_ok("subtracted", tiny_value_subtracted, s.origin));
     assert_true(all);
 }
 
@@ -605,6 +700,7 @@ int main(void)
         cmocka_unit_test(test_pdf_domain),
         cmocka_unit_test(test_pdf_normalization),
         cmocka_unit_test(test_pdf_chi2),
+        cmocka_unit_test(test_pdf_tiny_sphere),
         cmocka_unit_test(test_pdf_negative_controls),
     };
     return cmocka_run_group_tests_name("test_pdf", tests, negctl_group_setup,

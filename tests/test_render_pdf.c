@@ -2,6 +2,7 @@
  * are the pdf objects of pdf/pdf.h, bit for bit. */
 #include "tests/support/mc_test.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "mc/rng.h"
@@ -16,9 +17,14 @@ static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
 static bool same_vec(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 /* Values and directions for 10^5 random origins (in and around the lights,
- * inside the glass sphere too) and directions, for the book's light list
- * and the furnace's (an origin on the light sphere itself). */
-static void check_lights(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
+ * inside the glass sphere too) and directions, for the book's light list,
+ * the furnace's (an origin on the light sphere itself) and a sphere light
+ * seen at R / d ~ 1e-9 (its 1 - cos theta_max computed without
+ * cancellation on both sides). More than min_nonzero random directions
+ * must see a light; with `tiny`, every generated direction must get a
+ * finite positive density (a random one almost never hits that light). */
+static void check_lights(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed, int min_nonzero,
+                         bool tiny)
 {
     mc_rng rng = mc_rng_derive(seed, 0u);
     const rt_light *fast = rt_scene_lights(s);
@@ -35,7 +41,10 @@ static void check_lights(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
         assert_true(a.state == b.state);
         rng = a;
         /* The value at the generated direction and at a random one. */
-        assert_true(pdf_value(&list, da) == rt_lights_value(fast, n, o, da));
+        double vg = pdf_value(&list, da);
+        assert_true(vg == rt_lights_value(fast, n, o, da));
+        if (tiny)
+            assert_true(vg > 0.0 && isfinite(vg));
         vec3 d = smp_uniform_sphere_sample(mc_rng_uniform(&rng), mc_rng_uniform(&rng));
         double va = pdf_value(&list, d);
         assert_true(va == rt_lights_value(fast, n, o, d));
@@ -49,7 +58,7 @@ static void check_lights(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
         rng = a;
         assert_true(pdf_value(&cosine, da) == rt_cosine_value(d, da));
     }
-    assert_true(nonzero > 100);
+    assert_true(nonzero >= min_nonzero);
 }
 
 static void test_lights_match_pdf_objects(void **state)
@@ -57,10 +66,14 @@ static void test_lights_match_pdf_objects(void **state)
     (void)state;
     rt_camera_params cp;
     rt_scene *s = rt_scene_named("book", &cp);
-    check_lights(s, v3(0, 0, 0), v3(555, 555, 555), 31u);
+    check_lights(s, v3(0, 0, 0), v3(555, 555, 555), 31u, 100, false);
     rt_scene_destroy(s);
     s = rt_scene_furnace(0.5, 0.5, &cp);
-    check_lights(s, v3(-1, -1, -1), v3(1, 1, 1), 32u);
+    check_lights(s, v3(-1, -1, -1), v3(1, 1, 1), 32u, 100, false);
+    rt_scene_destroy(s);
+    s = rt_scene_sphere_light(1.0, 1e-7, 100.0, 400.0, 0.8, &cp);
+    assert_non_null(s);
+    check_lights(s, v3(-400, 0, -400), v3(400, 50, 400), 33u, 0, true);
     rt_scene_destroy(s);
 }
 

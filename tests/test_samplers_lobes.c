@@ -1,6 +1,8 @@
 /* tests/test_samplers_lobes.c - the Phong lobe, GGX, the uniform cone, the
  * cone that a sphere subtends (chapter 10, including the point inside the
- * sphere) and the area-to-solid-angle conversion of chapter 7. Every
+ * sphere, and spheres so small or far, R / d down to 1e-150, that
+ * 1 - cos theta_max must be computed without cancellation) and the
+ * area-to-solid-angle conversion of chapter 7. Every
  * sampler and parameter set passes chi-square, normalization, domain and
  * round trip; negative controls show the checks catching the bugs they are
  * for.
@@ -19,6 +21,7 @@
 #include "mc/constants.h"
 #include "mc/onb.h"
 #include "mc/quad.h"
+#include "mc/stats.h"
 #include "samplers/cone.h"
 #include "samplers/lobes.h"
 #include "samplers/measure.h"
@@ -201,6 +204,173 @@ static void test_sphere_cone_all_checks(void **state)
     warp_run_cases(cases, COUNT(cases), N_CHI2, mc_test_seed(5004u));
 }
 
+/* --- thin cones: 1 - cos theta_max without cancellation ------------------ */
+
+/* Spheres of radius R = ratio * d at distance d = 2.385 (squared distance
+ * rounded once; both inputs are then taken as exact). */
+static const double thin_ratios[] = {1e-6, 1e-8, 1e-10, 1e-150};
+enum { N_THIN = (int)(sizeof thin_ratios / sizeof thin_ratios[0]) };
+static const double thin_d = 2.385;
+
+/* 1 - cos theta_max of those exact inputs, written independently of
+ * samplers/cone.c: s = R^2 / d^2 in long double (64-bit significand),
+ * then the series 1 - sqrt(1 - s) = s/2 + s^2/8 + s^3/16 + 5 s^4/128 + ...
+ * For s <= 1e-12 the first omitted term, 7 s^5 / 256, is 1e-48 of the
+ * sum, and the long double rounding ~1e-19: far below the 1e-12 the check
+ * asks for. */
+static long double exact_one_minus_cos(double dist_sq, double radius)
+{
+    long double s = (long double)radius * (long double)radius / (long double)dist_sq;
+    return s / 2 + s * s / 8 + s * s * s / 16 + 5 * s * s * s * s / 128;
+}
+
+/* |got - exact| / exact in long double; inf when got is not finite. */
+static double rel_error(double got, long double exact)
+{
+    return isfinite(got) ? (double)fabsl(((long double)got - exact) / exact) : (double)INFINITY;
+}
+
+/* The cone's density, per unit solid angle, the way a light sampler gets
+ * it from (dist_sq, radius). */
+typedef double (*cone_density_fn)(double dist_sq, double radius);
+
+static double density_cap(double dist_sq, double radius)
+{
+    return smp_uniform_cap_pdf(vec3_make(0.0, 0.0, 1.0),
+                               smp_sphere_cone_one_minus_cos(dist_sq, radius));
+}
+
+/* The negative control: 1 - cos theta_max by subtraction from the rounded
+ * cosine, the route before the cap functions existed. */
+static double density_subtracted(double dist_sq, double radius)
+{
+    return smp_uniform_cone_pdf(vec3_make(0.0, 0.0, 1.0),
+                                smp_sphere_cone_cos_theta_max(dist_sq, radius));
+}
+
+/* The largest relative error of f against 1 / (2 pi (1 - cos theta_max))
+ * over the thin ratios (inf when f is not finite), each printed. */
+static double thin_density_error(const char *label, cone_density_fn f)
+{
+    const long double two_pi = 6.283185307179586476925286766559005768L;
+    double worst = 0.0;
+    for (int k = 0; k < N_THIN; k++) {
+        double dist_sq = thin_d * thin_d, radius = thin_ratios[k] * thin_d;
+        long double exact = 1 / (two_pi * exact_one_minus_cos(dist_sq, radius));
+        double got = f(dist_sq, radius);
+        double rel = rel_error(got, exact);
+        printf("thin cone %-10s R/d %.0e: density %.17g, exact %.17Lg, relative error %.3g\n",
+               label, thin_ratios[k], got, exact, rel);
+        worst = rel > worst ? rel : worst;
+    }
+    return worst;
+}
+
+/* The cap's density for spheres at R / d = 1e-6, 1e-8, 1e-10 and 1e-150
+ * matches 1 / (2 pi (1 - cos theta_max)) from the series to 1e-12
+ * relative, and so does 1 - cos theta_max itself (deterministic: the
+ * functions are a few roundings away from exact). The density integrates
+ * to 1 over the solid angle in the cap's own coordinates (1 - cos theta,
+ * phi), d omega = d(1 - cos theta) d phi, with the directions built here:
+ * 1 over [0, h], exactly 0 over [h, 2h] beyond the rim. */
+typedef struct thin_norm {
+    double h, phi;
+} thin_norm;
+
+static double thin_norm_integrand(double t, void *params)
+{
+    const thin_norm *n = params;
+    double omz = t * n->h, sin_theta = sqrt(omz * (2.0 - omz));
+    vec3 w = vec3_make(sin_theta * cos(n->phi), sin_theta * sin(n->phi), 1.0 - omz);
+    return smp_uniform_cap_pdf(w, n->h) * MC_2PI * n->h;
+}
+
+static void test_thin_cone_density(void **state)
+{
+    (void)state;
+    assert_true(thin_density_error("cap", density_cap) <= 1e-12);
+    mc_quad *q = mc_quad_create(1000);
+    assert_non_null(q);
+    for (int k = 0; k < N_THIN; k++) {
+        double dist_sq = thin_d * thin_d, radius = thin_ratios[k] * thin_d;
+        long double exact = exact_one_minus_cos(dist_sq, radius);
+        double h = smp_sphere_cone_one_minus_cos(dist_sq, radius);
+        double h_subtracted = 1.0 - smp_sphere_cone_cos_theta_max(dist_sq, radius);
+        double rel = rel_error(h, exact);
+        printf("thin cone R/d %.0e: 1 - cos theta_max %.17g, relative error %.3g "
+               "(by subtraction %.3g)\n",
+               thin_ratios[k], h, rel, rel_error(h_subtracted, exact));
+        assert_true(rel <= 1e-12);
+        thin_norm n = {h, 2.385};
+        double inside = 0.0, beyond = 1.0;
+        (void)mc_quad_1d(q, (mc_fn1){thin_norm_integrand, &n}, 0.0, 1.0, &inside, NULL);
+        (void)mc_quad_1d(q, (mc_fn1){thin_norm_integrand, &n}, 1.0, 2.0, &beyond, NULL);
+        assert_near(inside, 1.0, 1e-12);
+        assert_true(beyond == 0.0);
+    }
+    mc_quad_destroy(q);
+    /* The limits: inside the sphere the whole sphere (h = 2, 1 / (4 pi)),
+     * a point has no cone and no density. */
+    assert_true(smp_sphere_cone_one_minus_cos(1.0, 1.0) == 2.0);
+    assert_near(density_cap(0.25, 1.0), MC_INV_4PI, 1e-17);
+    assert_true(smp_sphere_cone_one_minus_cos(4.0, 0.0) == 0.0);
+    assert_true(density_cap(4.0, 0.0) == 0.0);
+}
+
+/* A direction of the cone toward a sphere, drawn from (u1, u2). */
+typedef vec3 (*cone_sample_fn)(double u1, double u2, double dist_sq, double radius);
+
+static vec3 sample_cap(double u1, double u2, double dist_sq, double radius)
+{
+    return smp_uniform_cap_sample(u1, u2, smp_sphere_cone_one_minus_cos(dist_sq, radius));
+}
+
+/* The negative control: the cone sampled from the rounded cosine. */
+static vec3 sample_subtracted(double u1, double u2, double dist_sq, double radius)
+{
+    return smp_uniform_cone_sample(u1, u2, smp_sphere_cone_cos_theta_max(dist_sq, radius));
+}
+
+/* Whether n directions of f at every thin ratio (streams seed, k) lie in
+ * the cone, sin^2 theta = x^2 + y^2 <= R^2 / d^2 (1 + 1e-12, for the
+ * rounding of both sides) with z > 0, have a positive cap density, and
+ * fill it: V = sin^2 theta / sin^2 theta_max has mean
+ * (1 - h / 3) / (2 - h) = 1/2 to 1e-13 for uniform directions in the
+ * cone (1 - cos theta = u h, sin^2 = u h (2 - u h)); |z| < 4 against 1/2
+ * (two-sided false alarm 6.3e-5 per ratio). */
+static bool thin_samples_ok(cone_sample_fn f, int n, uint64_t seed)
+{
+    bool ok = true;
+    for (int k = 0; k < N_THIN; k++) {
+        double dist_sq = thin_d * thin_d, radius = thin_ratios[k] * thin_d;
+        double sin2_max = thin_ratios[k] * thin_ratios[k];
+        double h = smp_sphere_cone_one_minus_cos(dist_sq, radius);
+        mc_rng rng = mc_rng_derive(seed, (uint64_t)k);
+        mc_welford v = mc_welford_init();
+        int outside = 0;
+        for (int i = 0; i < n; i++) {
+            double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng);
+            vec3 w = f(u1, u2, dist_sq, radius);
+            double sin2 = w.x * w.x + w.y * w.y;
+            if (!(w.z > 0.0 && sin2 <= sin2_max * (1.0 + 1e-12) && smp_uniform_cap_pdf(w, h) > 0.0))
+                outside++;
+            mc_welford_add(&v, sin2 / sin2_max);
+        }
+        double z = mc_z_score(v.mean, 0.5, mc_welford_std_error(&v));
+        printf("thin cone samples R/d %.0e: %d outside, spread mean %.5f (z %.2f, seed %llu)\n",
+               thin_ratios[k], outside, v.mean, z, (unsigned long long)seed);
+        ok = ok && outside == 0 && fabs(z) < 4.0;
+    }
+    return ok;
+}
+
+/* 10^4 cap samples per ratio, seed 5007: all inside, spread as uniform. */
+static void test_thin_cone_samples(void **state)
+{
+    (void)state;
+    assert_true(thin_samples_ok(sample_cap, 10000, mc_test_seed(5007u)));
+}
+
 /* --- area to solid angle ------------------------------------------------ */
 
 /* A parallelogram light seen from a point, off-axis and tilted. */
@@ -368,6 +538,13 @@ static void test_negative_controls(void **state)
     assert_true(negctl_record(t, "GGX without its cos theta_h", "chi-square",
                               warp_chi2_rejects(&ggx, N_CHI2, mc_test_seed(5006u))));
 
+    assert_true(negctl_record(t, "thin-cone density from 1 - rounded cos theta_max",
+                              "thin-cone accuracy (1e-12)",
+                              !(thin_density_error("subtracted", density_subtracted) <= 1e-12)));
+    assert_true(negctl_record(t, "thin cone sampled from the rounded cos theta_max",
+                              "thin-cone spread (z-test)",
+                              !thin_samples_ok(sample_subtracted, 10000, mc_test_seed(5008u))));
+
     quad_view v = make_quad_view();
     v.squared = false;
     warp_case quad = quad_case(&v, "negctl-area-distance-not-squared");
@@ -380,6 +557,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lobes_all_checks),     cmocka_unit_test(test_cone_all_checks),
         cmocka_unit_test(test_sphere_cone_geometry), cmocka_unit_test(test_sphere_cone_all_checks),
+        cmocka_unit_test(test_thin_cone_density),    cmocka_unit_test(test_thin_cone_samples),
         cmocka_unit_test(test_area_to_solid_angle),  cmocka_unit_test(test_negative_controls),
     };
     return cmocka_run_group_tests_name("test_samplers_lobes", tests, negctl_group_setup,

@@ -230,9 +230,14 @@ static bool prepare_pdf(const warp_entry *e, warp_state *s, char *err, size_t er
         }
         s->sphere = pdf_toward_sphere(o, p->center, p->radius);
         double c = s->sphere.as.sphere.cos_theta_max;
-        if (!pdf_valid(&s->sphere)) {
+        /* The density itself is accurate for any size (samplers/cone.h),
+         * but the histogram's chart is (cos theta, phi): a direction's
+         * cosine carries ~1e-16 of rounding, which must stay far below a
+         * cell of the chart's width 1 - cos theta_max. */
+        if (!pdf_valid(&s->sphere) || !(s->sphere.as.sphere.one_minus_cos >= 1e-9)) {
             snprintf(err, errlen,
-                     "sphere-light: the sphere is too small to be seen from the origin");
+                     "sphere-light: the sphere is too small to histogram in (cos theta, phi) "
+                     "(needs R/d >= 4.5e-5)");
             return false;
         }
         /* The cone's chart starts at its rim: its edge is a cell edge. */
