@@ -12,10 +12,9 @@
  *                 build/bin/sphere_plot --method rejection --seed 7
  */
 #include <stdio.h>
-#include <string.h>
 
 #include "examples/common/cli.h"
-#include "samplers/sphere.h"
+#include "examples/common/warp_table.h"
 
 static const char *const methods[] = {"inverse", "gaussian", "rejection", NULL};
 
@@ -34,20 +33,21 @@ int main(int argc, char **argv)
     if (n > 100000000u)
         app_fail("sphere_plot", "--samples: at most 1e8 points (a plot needs far fewer)");
 
+    /* The three methods are warp's entries sphere-<method>: one sampler
+     * table for both programs, so the scatter plot shows what warp tests. */
+    char name[32], err[200];
+    snprintf(name, sizeof name, "sphere-%s", method);
+    const warp_entry *e = warp_find(name);
+    static warp_state state;
+    warp_params params;
+    warp_defaults(e, &params);
+    if (!warp_prepare(e, &params, &state, err, sizeof err))
+        app_fail("sphere_plot", "%s", err);
     mc_rng rng = mc_rng_derive(seed, 0u);
     for (uint64_t i = 0; i < n; i++) {
-        vec3 d;
-        if (strcmp(method, "inverse") == 0) {
-            double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng);
-            d = smp_uniform_sphere_sample(u1, u2);
-        } else if (strcmp(method, "gaussian") == 0) {
-            double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng);
-            double u3 = mc_rng_uniform(&rng), u4 = mc_rng_uniform(&rng);
-            d = smp_uniform_sphere_sample_gaussian(u1, u2, u3, u4);
-        } else {
-            d = smp_uniform_sphere_sample_rejection(&rng);
-        }
-        printf("%.17g %.17g %.17g\n", d.x, d.y, d.z);
+        double d[3];
+        warp_sample(e, &state, &rng, d);
+        printf("%.17g %.17g %.17g\n", d[0], d[1], d[2]);
     }
     return 0;
 }

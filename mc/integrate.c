@@ -3,22 +3,57 @@
 
 #include <math.h>
 
-mc_estimate mc_integrate_is(mc_fn1 f, mc_warp1 w, mc_rng *rng, uint64_t n, mc_weighted *record)
+mc_estimate mc_integrate_sampler(mc_is_sampler s, void *x, mc_rng *rng, uint64_t n)
 {
     mc_welford acc = mc_welford_init();
     for (uint64_t i = 0; i < n; i++) {
-        double x = w.sample(mc_uniform_open(rng));
-        double p = w.pdf(x);
+        double p = s.draw(rng, s.ctx, x);
         /* The convention 0/0 = 0: where the density is 0 no sample should
          * fall, and one that does must not turn the mean into NaN. */
-        double weight = p > 0.0 ? f.f(x, f.params) / p : 0.0;
+        double weight = p > 0.0 ? s.f(x, s.ctx) / p : 0.0;
         mc_welford_add(&acc, weight);
-        if (record) {
-            record[i].x = x;
-            record[i].w = weight;
-        }
+        if (s.seen)
+            s.seen(x, weight, s.ctx);
     }
     return mc_welford_estimate(&acc);
+}
+
+/* mc_integrate_is as an mc_is_sampler over doubles. */
+typedef struct warp1_ctx {
+    mc_fn1 f;
+    mc_warp1 w;
+    mc_weighted *record;
+    uint64_t i;
+} warp1_ctx;
+
+static double warp1_draw(mc_rng *rng, void *ctx, void *x)
+{
+    const warp1_ctx *c = ctx;
+    double *px = x;
+    *px = c->w.sample(mc_uniform_open(rng));
+    return c->w.pdf(*px);
+}
+
+static double warp1_f(const void *x, void *ctx)
+{
+    const warp1_ctx *c = ctx;
+    return c->f.f(*(const double *)x, c->f.params);
+}
+
+static void warp1_seen(const void *x, double weight, void *ctx)
+{
+    warp1_ctx *c = ctx;
+    c->record[c->i].x = *(const double *)x;
+    c->record[c->i].w = weight;
+    c->i++;
+}
+
+mc_estimate mc_integrate_is(mc_fn1 f, mc_warp1 w, mc_rng *rng, uint64_t n, mc_weighted *record)
+{
+    warp1_ctx c = {f, w, record, 0u};
+    mc_is_sampler s = {warp1_draw, warp1_f, record ? warp1_seen : NULL, &c};
+    double x;
+    return mc_integrate_sampler(s, &x, rng, n);
 }
 
 mc_estimate mc_integrate_uniform(mc_fn1 f, double a, double b, mc_rng *rng, uint64_t n,

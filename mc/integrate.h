@@ -42,6 +42,29 @@ typedef struct mc_weighted {
     double x, w;
 } mc_weighted;
 
+/* An importance sampler over any space (the real line, directions, ...),
+ * seen through callbacks so that mc/ needs no type of the layers above:
+ * draw puts one point drawn with rng into the caller's storage x and
+ * returns the density there (per unit of the measure the integral is
+ * over); f returns the integrand at the point in x; seen, unless NULL, is
+ * told every point and its weight f / density, in drawing order. */
+typedef struct mc_is_sampler {
+    double (*draw)(mc_rng *rng, void *ctx, void *x);
+    double (*f)(const void *x, void *ctx);
+    void (*seen)(const void *x, double weight, void *ctx);
+    void *ctx;
+} mc_is_sampler;
+
+/* The importance-sampled estimate of the integral of s.f from n >= 1
+ * points of s.draw, each drawn into x (storage for one point, of the
+ * type the callbacks agree on): the mean of the weights f / density,
+ * its variance per sample and its standard error (Welford). A point whose
+ * density is 0 weighs 0 and f is not called there: the estimate is
+ * unbiased only if f vanishes wherever the density does, which is the
+ * caller's contract. The one loop behind mc_integrate_is and the
+ * directional integrators of pdf/experiments.h. */
+mc_estimate mc_integrate_sampler(mc_is_sampler s, void *x, mc_rng *rng, uint64_t n);
+
 /* The estimate of the integral of f from n >= 1 samples x = w.sample(u),
  * u = mc_uniform_open(rng): the mean of f(x) / w.pdf(x), its variance per
  * sample and its standard error (Welford). A sample with pdf(x) == 0

@@ -4,31 +4,54 @@
 #include <math.h>
 
 #include "mc/constants.h"
+#include "mc/integrate.h"
 #include "mc/onb.h"
 #include "samplers/planar.h"
 #include "samplers/sphere.h"
 
+/* pdf_integrate and pdf_integrate_warp as mc_is_samplers over unit
+ * directions (vec3): mc_integrate_sampler holds the one weighting loop. */
+typedef struct dir_ctx {
+    pdf_fn f;
+    const pdf *p;
+    pdf_warp warp;
+} dir_ctx;
+
+static double dir_f(const void *x, void *ctx)
+{
+    const dir_ctx *c = ctx;
+    return c->f.f(*(const vec3 *)x, c->f.ctx);
+}
+
+static double pdf_draw(mc_rng *rng, void *ctx, void *x)
+{
+    const dir_ctx *c = ctx;
+    vec3 *d = x;
+    *d = pdf_generate(c->p, rng);
+    return pdf_value(c->p, *d);
+}
+
+static double warp_draw(mc_rng *rng, void *ctx, void *x)
+{
+    const dir_ctx *c = ctx;
+    vec3 *d = x;
+    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    *d = c->warp.sample(u1, u2);
+    return c->warp.pdf(*d);
+}
+
 mc_estimate pdf_integrate(pdf_fn f, const pdf *p, mc_rng *rng, uint64_t n)
 {
-    mc_welford w = mc_welford_init();
-    for (uint64_t i = 0; i < n; i++) {
-        vec3 d = pdf_generate(p, rng);
-        double density = pdf_value(p, d);
-        mc_welford_add(&w, density > 0.0 ? f.f(d, f.ctx) / density : 0.0);
-    }
-    return mc_welford_estimate(&w);
+    dir_ctx c = {f, p, {NULL, NULL}};
+    vec3 d;
+    return mc_integrate_sampler((mc_is_sampler){pdf_draw, dir_f, NULL, &c}, &d, rng, n);
 }
 
 mc_estimate pdf_integrate_warp(pdf_fn f, pdf_warp warp, mc_rng *rng, uint64_t n)
 {
-    mc_welford w = mc_welford_init();
-    for (uint64_t i = 0; i < n; i++) {
-        double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-        vec3 d = warp.sample(u1, u2);
-        double density = warp.pdf(d);
-        mc_welford_add(&w, density > 0.0 ? f.f(d, f.ctx) / density : 0.0);
-    }
-    return mc_welford_estimate(&w);
+    dir_ctx c = {f, NULL, warp};
+    vec3 d;
+    return mc_integrate_sampler((mc_is_sampler){warp_draw, dir_f, NULL, &c}, &d, rng, n);
 }
 
 /* Lambert: the irradiance is L times the projected solid angle, and by

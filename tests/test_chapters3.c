@@ -83,8 +83,9 @@ static void test_sphere_importance(void **state)
     rng = mc_rng_derive(seed, 1u);
     pdf_warp wrong = {smp_uniform_sphere_sample, hemisphere_density};
     mc_estimate e = pdf_integrate_warp((pdf_fn){cos_sq, NULL}, wrong, &rng, N);
-    assert_true(
-        negctl_record(t, "sphere weighted with the hemisphere pdf", "z-test", z_rejects(e, m[1])));
+    assert_seeded(
+        negctl_record(t, "sphere weighted with the hemisphere pdf", "z-test", z_rejects(e, m[1])),
+        seed);
 }
 
 /* --- cos_cubed ------------------------------------------------------------ */
@@ -127,7 +128,8 @@ static void test_cos_cubed(void **state)
     rng = mc_rng_derive(seed, 1u);
     mc_estimate e =
         pdf_integrate_warp(f, (pdf_warp){smp_cosine_hemisphere_sample, cosine_without_pi}, &rng, N);
-    assert_true(negctl_record(t, "cosine pdf without 1/pi", "z-test", z_rejects(e, MC_PI_2)));
+    assert_seeded(negctl_record(t, "cosine pdf without 1/pi", "z-test", z_rejects(e, MC_PI_2)),
+                  seed);
 }
 
 /* --- light_pdf ------------------------------------------------------------ */
@@ -227,8 +229,9 @@ static void test_light_pdf(void **state)
         double no_cos = pdf_value(&light, d) * fabs(vec3_dot(n, d));
         mc_welford_add(&w, f.f(d, f.ctx) / no_cos);
     }
-    assert_true(negctl_record(t, "light pdf without the cosine", "z-test",
-                              z_rejects(mc_welford_estimate(&w), exact)));
+    assert_seeded(negctl_record(t, "light pdf without the cosine", "z-test",
+                                z_rejects(mc_welford_estimate(&w), exact)),
+                  seed);
 }
 
 /* --- sphere_light ----------------------------------------------------------- */
@@ -290,8 +293,9 @@ static void test_sphere_light(void **state)
                 mc_welford_add(&w, radiance * fmax(0.0, dir.z) * cos_q / vec3_length_sq(p) *
                                        MC_4PI * r * r);
             }
-            assert_true(negctl_record(t, "sphere light by area without visibility", "z-test",
-                                      z_rejects(mc_welford_estimate(&w), exact)));
+            assert_seeded(negctl_record(t, "sphere light by area without visibility", "z-test",
+                                        z_rejects(mc_welford_estimate(&w), exact)),
+                          seed);
         }
     }
     mc_quad_destroy(q);
@@ -333,8 +337,9 @@ static void test_projected_area(void **state)
         double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng);
         mc_welford_add(&w, 2.0 * pdf_body_projected_area(box, smp_uniform_sphere_sample(u1, u2)));
     }
-    assert_true(negctl_record(t, "box shadow from all six faces", "z-test",
-                              z_rejects(mc_welford_estimate(&w), box_mean)));
+    assert_seeded(negctl_record(t, "box shadow from all six faces", "z-test",
+                                z_rejects(mc_welford_estimate(&w), box_mean)),
+                  seed);
 }
 
 /* --- mixture ---------------------------------------------------------------- */
@@ -393,12 +398,13 @@ static void test_mixture(void **state)
         vec3 d = pdf_generate(chosen, &rng);
         mc_welford_add(&w, sky_integrand(d, &sky) / pdf_value(chosen, d));
     }
-    assert_true(negctl_record(t, "mixture weighted by the chosen component only", "z-test",
-                              z_rejects(mc_welford_estimate(&w), exact_sky)));
+    assert_seeded(negctl_record(t, "mixture weighted by the chosen component only", "z-test",
+                                z_rejects(mc_welford_estimate(&w), exact_sky)),
+                  seed);
     rng = mc_rng_derive(seed, 6u);
     mc_estimate el = pdf_integrate((pdf_fn){sky_integrand, &sky}, &light, &rng, N);
-    assert_true(
-        negctl_record(t, "light pdf alone under a sky", "z-test", z_rejects(el, exact_sky)));
+    assert_seeded(
+        negctl_record(t, "light pdf alone under a sky", "z-test", z_rejects(el, exact_sky)), seed);
 }
 
 /* --- the programs ------------------------------------------------------------ */

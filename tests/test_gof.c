@@ -94,12 +94,12 @@ static void test_gof_correct_samplers_pass(void **state)
     uint64_t seed = mc_test_seed(8101u);
     mc_gof_spec one = {1, {0.0, 0.0}, {1.0, 0.0}, {50, 1}, sample_sqrt, pdf_2x, NULL};
     mc_gof_result r = run(one, seed);
-    assert_false(r.reject);
+    assert_seeded(!r.reject, seed);
     assert_int_equal(r.r.dof, 49);
     assert_true(r.outside == 0.0);
     mc_gof_spec disc = {2, {0.0, 0.0}, {1.0, MC_2PI}, {40, 60}, sample_disc, pdf_disc, NULL};
     assert_int_equal(mc_gof_cell_count(&disc), 2400);
-    assert_false(run(disc, mc_test_seed(8102u)).reject);
+    assert_seeded(!run(disc, mc_test_seed(8102u)).reject, mc_test_seed(8102u));
 }
 
 static void test_gof_integrate(void **state)

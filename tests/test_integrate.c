@@ -69,8 +69,9 @@ static void test_integrate_x_sq_negative_control(void **state)
     uint64_t seed = mc_test_seed(6004u);
     mc_rng rng = mc_rng_derive(seed, 0u);
     mc_estimate e = mc_integrate_is(fx2, (mc_warp1){uniform02_sample, smp_linear_pdf}, &rng, 1000000u, NULL);
-    assert_true(negctl_record(t, "uniform samples weighted by the linear pdf", "z-test",
-                              fabs(mc_z_score(e.value, EXACT_X_SQ, e.std_error)) >= Z_MAX));
+    assert_seeded(negctl_record(t, "uniform samples weighted by the linear pdf", "z-test",
+                                fabs(mc_z_score(e.value, EXACT_X_SQ, e.std_error)) >= Z_MAX),
+                  seed);
 }
 
 /* The perfect density p = 3x^2/8: every weight is 8/3 up to round-off, so
@@ -251,7 +252,9 @@ static void test_halfway_error_bar_and_negative_control(void **state)
     printf("halfway error bar: sum z^2 = %.2f over 32 seeds (limit %.2f)\n", sum, limit);
     if (!(sum < limit))
         fail_msg("sum of z^2 %.2f >= %.2f: the halfway error bar is too small", sum, limit);
-    assert_true(negctl_record(t, "unweighted median as the halfway point", "z-test", caught == 32));
+    assert_seeded(
+        negctl_record(t, "unweighted median as the halfway point", "z-test", caught == 32),
+        mc_test_seed(6100u));
 }
 
 /* --- ln(sin x) ------------------------------------------------------------ */
@@ -298,7 +301,7 @@ static void test_log_sin_z(void **state)
     mc_estimate is = mc_integrate_is(f, w, &rng, 1000000u, NULL);
     assert_z_below("ln sin, importance", is.value, exact, is.std_error, Z_MAX, seed);
     assert_z_below("its variance", is.variance, var_is, 0.00161 * var_is, Z_MAX, seed);
-    assert_true(is.variance < 0.1 * p.variance);
+    assert_seeded(is.variance < 0.1 * p.variance, seed);
 }
 
 /* Negative control: the importance estimator with its pdf 1% too large
@@ -309,8 +312,9 @@ static void test_log_sin_negative_control(void **state)
     mc_rng rng = mc_rng_derive(mc_test_seed(6203u), 0u);
     const mc_warp1 w = {smp_log_ends_sample, log_ends_pdf_101};
     mc_estimate e = mc_integrate_is((mc_fn1){log_sin, NULL}, w, &rng, 1000000u, NULL);
-    assert_true(negctl_record(t, "ln sin with the pdf scaled by 1.01", "z-test",
-                              fabs(mc_z_score(e.value, -MC_PI * MC_LN2, e.std_error)) >= Z_MAX));
+    assert_seeded(negctl_record(t, "ln sin with the pdf scaled by 1.01", "z-test",
+                                fabs(mc_z_score(e.value, -MC_PI * MC_LN2, e.std_error)) >= Z_MAX),
+                  mc_test_seed(6203u));
 }
 
 /* The importance weight ln(sin x) / p(x) lies in [-pi, 0] (Jordan's

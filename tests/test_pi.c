@@ -70,7 +70,7 @@ static void test_pi_z_negative_controls(void **state)
     double book = g.value * (double)(sx * sx) / (double)big;
     bool b = negctl_record(t, "pi stratified, floor(sqrt N)^2 points / N", "z-test",
                            fabs(mc_z_score(book, MC_PI, g.std_error)) >= Z_MAX);
-    assert_true(a && b);
+    assert_seeded(a && b, seed);
 }
 
 /* One point of the integer hit test of mc/pi.h, scalar: cell centres
@@ -176,13 +176,14 @@ static void test_pi_stratified_beats_plain(void **state)
         se_plain += (p.value - MC_PI) * (p.value - MC_PI);
         se_strat += (s.value - MC_PI) * (s.value - MC_PI);
         se_book += (book - MC_PI) * (book - MC_PI);
-        assert_true(s.std_error < p.std_error);
+        assert_seeded(s.std_error < p.std_error, seed);
     }
     printf("squared errors over 8 seeds: plain %.3g, stratified %.3g, book's /N variant %.3g\n",
            se_plain, se_strat, se_book);
-    assert_true(se_strat < se_plain);
-    assert_true(negctl_record(t, "stratified points divided by the wrong N", "stratified < plain",
-                              !(se_book < se_plain)));
+    assert_seeded(se_strat < se_plain, mc_test_seed(3100u));
+    assert_seeded(negctl_record(t, "stratified points divided by the wrong N", "stratified < plain",
+                                !(se_book < se_plain)),
+                  mc_test_seed(3100u));
 }
 
 /* The collapsed-strata error bar is honest (never too small): over 32
@@ -206,7 +207,8 @@ static void test_pi_stratified_error_bar_honest(void **state)
     printf("stratified error bar: sum z^2 = %.2f over 32 seeds (limit %.2f)\n", sum, limit);
     if (!(sum < limit))
         fail_msg("sum of z^2 %.2f >= %.2f: the stratified error bar is too small", sum, limit);
-    assert_true(negctl_record(t, "stratified error bar / 5", "sum of z^2", !(sum_shrunk < limit)));
+    assert_seeded(negctl_record(t, "stratified error bar / 5", "sum of z^2", !(sum_shrunk < limit)),
+                  mc_test_seed(3200u));
 }
 
 /* Edge cases: n = 1 gives 0 or 4 with a finite error bar; the estimate from

@@ -8,6 +8,7 @@
 #include "mc/quad.h"
 #include "mc/stats.h"
 #include "mc/strat.h"
+#include "tests/support/negctl.h"
 
 static double f_sin(double x, void *p) { (void)p; return sin(x); }
 static double f_inv_sqrt(double x, void *p) { (void)p; return 1.0 / sqrt(x); }
@@ -135,7 +136,7 @@ static void test_strat_1d_large_n_half_open(void **state)
  * points but divide by N) is biased by a factor 9/10 and must be rejected. */
 static void test_strat_non_square_unbiased(void **state)
 {
-    (void)state;
+    negctl *t = *state;
     enum { N = 10, REPS = 200000 };
     uint64_t seed = mc_test_seed(3002u);
     mc_rng rng = mc_rng_derive(seed, 0u);
@@ -155,7 +156,10 @@ static void test_strat_non_square_unbiased(void **state)
     }
     double exact = 0.5 + 1.0 / 3.0;
     assert_z_below("jittered N = 10", ours.mean, exact, mc_welford_std_error(&ours), 4.0, seed);
-    assert_true(fabs(mc_z_score(book.mean, exact, mc_welford_std_error(&book))) >= 4.0);
+    assert_seeded(
+        negctl_record(t, "floor(sqrt N)^2 grid points divided by N", "z-test",
+                      fabs(mc_z_score(book.mean, exact, mc_welford_std_error(&book))) >= 4.0),
+        seed);
 }
 
 /* Stratification helps: over 8 seeds the RMS error of the jittered mean of
@@ -180,7 +184,7 @@ static void test_strat_beats_plain(void **state)
         se_strat += (a / N - exact) * (a / N - exact);
         se_plain += (b / N - exact) * (b / N - exact);
     }
-    assert_true(sqrt(se_strat) < 0.25 * sqrt(se_plain));
+    assert_seeded(sqrt(se_strat) < 0.25 * sqrt(se_plain), mc_test_seed(3003u));
 }
 
 int main(void)
@@ -194,5 +198,6 @@ int main(void)
         cmocka_unit_test(test_strat_non_square_unbiased),
         cmocka_unit_test(test_strat_beats_plain),
     };
-    return cmocka_run_group_tests_name("test_quad_strat", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("test_quad_strat", tests, negctl_group_setup,
+                                       negctl_group_teardown);
 }

@@ -12,10 +12,9 @@
 #include "mc/stats.h"
 #include "render/render.h"
 #include "render/scenes.h"
+#include "tests/support/negctl.h"
 
 static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
-
-static int controls_run, controls_caught;
 
 /* The two-sided normal threshold that keeps the chance of any false
  * alarm among m tests at alpha (Sidak). */
@@ -126,7 +125,7 @@ static mc_estimate radiance_at(const rt_scene *s, const rt_path_settings *ps, do
  * must fail at the point below the light. */
 static void test_sphere_light_irradiance(void **state)
 {
-    (void)state;
+    negctl *t = *state;
     const double phi = 4e5, r = 20.0, h = 100.0, rho = 0.8;
     static const double px[5] = {0, 60, 150, 300, 100}, pz[5] = {0, 0, 0, 0, -230};
     rt_camera_params cp;
@@ -152,9 +151,7 @@ static void test_sphere_light_irradiance(void **state)
     mc_estimate e = radiance_at(s, &bad, 0.0, 0.0, 40000, seed + 99u);
     double z = mc_z_score(e.value, sphere_light_expected(phi, h, rho, 0.0, 0.0), e.std_error);
     printf("negative control (mixture, light pdf x 2) below the light: z = %.1f\n", z);
-    controls_run++;
-    controls_caught += fabs(z) >= 4.0;
-    if (fabs(z) < 4.0)
+    if (!negctl_record(t, "mixture with its light pdf x 2", "z-test", fabs(z) >= 4.0))
         fail_msg("negative control not caught: doubled light pdf gives z = %.2f (seed %llu)", z,
                  (unsigned long long)seed);
     rt_scene_destroy(s);
@@ -233,7 +230,7 @@ static void test_russian_roulette_same_mean(void **state)
  * the same check must reject. */
 static void test_nan_samples_dropped_and_counted(void **state)
 {
-    (void)state;
+    negctl *t = *state;
     rt_scene *s = rt_scene_create();
     int one = rt_scene_add_material(s, rt_diffuse_light(v3(1, 1, 1)));
     int nan = rt_scene_add_material(s, rt_diffuse_light(v3((double)NAN, (double)NAN, (double)NAN)));
@@ -258,8 +255,8 @@ static void test_nan_samples_dropped_and_counted(void **state)
     assert_int_equal(st.dropped, mid->dropped + 100);
     assert_int_equal(rt_image_dropped(img), st.dropped);
     double book = (double)mid->n / 100.0;
-    controls_run++;
-    controls_caught += book != 1.0;
+    assert_true(
+        negctl_record(t, "the book's NaN rule (0, divided by spp)", "pixel value 1", book != 1.0));
     rt_image_destroy(img);
     rt_scene_destroy(s);
 }
@@ -273,7 +270,6 @@ int main(void)
         cmocka_unit_test(test_russian_roulette_same_mean),
         cmocka_unit_test(test_nan_samples_dropped_and_counted),
     };
-    int failed = cmocka_run_group_tests_name("test_render_integrator", tests, NULL, NULL);
-    printf("negative controls: caught %d/%d\n", controls_caught, controls_run);
-    return failed || controls_caught < controls_run;
+    return cmocka_run_group_tests_name("test_render_integrator", tests, negctl_group_setup,
+                                       negctl_group_teardown);
 }

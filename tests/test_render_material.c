@@ -9,11 +9,9 @@
 #include "mc/rng.h"
 #include "mc/stats.h"
 #include "render/material.h"
+#include "tests/support/negctl.h"
 
 static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
-
-/* Negative controls run and caught, printed once by main. */
-static int controls_run, controls_caught;
 
 /* Known values of the exact reflectance: ((n1 - n2) / (n1 + n2))^2 at
  * normal incidence (0.04 for glass), R_p = 0 at Brewster's angle
@@ -66,7 +64,7 @@ static double schlick_max_error(double n1, double n2, double (*approx)(double, d
  * angle and must exceed the bound. */
 static void test_fresnel_schlick_within_known_bound(void **state)
 {
-    (void)state;
+    negctl *t = *state;
     static const double n[3] = {1.33, 1.5, 2.0}, bound[3] = {0.0599, 0.0357, 0.0444};
     for (int i = 0; i < 3; i++) {
         double in = schlick_max_error(1.0, n[i], rt_fresnel_schlick);
@@ -79,10 +77,7 @@ static void test_fresnel_schlick_within_known_bound(void **state)
     }
     double book = schlick_max_error(1.5, 1.0, rt_fresnel_schlick_book);
     printf("negative control, the book's Schlick leaving glass: max error %.4f\n", book);
-    int caught = book > 0.0357 + 2e-4;
-    controls_run++;
-    controls_caught += caught;
-    if (!caught)
+    if (!negctl_record(t, "the book's Schlick leaving glass", "known bound", book > 0.0357 + 2e-4))
         fail_msg("the book's Schlick (incident cosine inside the glass) was not caught: %.4f", book);
 }
 
@@ -183,7 +178,6 @@ int main(void)
         cmocka_unit_test(test_dielectric_reflects_with_fresnel_probability),
         cmocka_unit_test(test_lambert_metal_light),
     };
-    int failed = cmocka_run_group_tests_name("test_render_material", tests, NULL, NULL);
-    printf("negative controls: caught %d/%d\n", controls_caught, controls_run);
-    return failed || controls_caught < controls_run;
+    return cmocka_run_group_tests_name("test_render_material", tests, negctl_group_setup,
+                                       negctl_group_teardown);
 }

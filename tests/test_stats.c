@@ -6,16 +6,18 @@
 #include "mc/chi2.h"
 #include "mc/rng.h"
 #include "mc/stats.h"
+#include "tests/support/negctl.h"
 
 /* Data with mean 1e9 and variance about 1: the textbook trap for the
  * one-pass formula (sum x^2 - n mean^2) / (n - 1), whose two terms are 1e24
  * and agree to 24 digits. Welford must match a two-pass computation. */
 static void test_welford_ill_conditioned(void **state)
 {
-    (void)state;
+    negctl *t = *state;
     enum { N = 1000000 };
     static double x[N];
-    mc_rng rng = mc_rng_derive(mc_test_seed(2001u), 0u);
+    uint64_t seed = mc_test_seed(2001u);
+    mc_rng rng = mc_rng_derive(seed, 0u);
     mc_welford w = mc_welford_init();
     double sum = 0.0, sumsq = 0.0; /* for the one-pass formula */
     for (int i = 0; i < N; i++) {
@@ -41,7 +43,9 @@ static void test_welford_ill_conditioned(void **state)
     /* Negative control: the one-pass formula on the same data is off by far
      * more than the tolerance the Welford result met. */
     double naive = (sumsq - sum * sum / N) / (N - 1);
-    assert_true(fabs(naive - two_pass) > 1e-2);
+    assert_seeded(negctl_record(t, "one-pass variance formula", "two-pass variance",
+                                fabs(naive - two_pass) > 1e-2),
+                  seed);
 }
 
 /* 10^10 samples and more: merging an accumulator with itself 14 times
@@ -111,17 +115,21 @@ static void test_estimators_ztest(void **state)
  * divides by n/2 instead of n - 1. */
 static void test_estimators_negative_control(void **state)
 {
-    (void)state;
+    negctl *t = *state;
     enum { N = 1000000 };
-    mc_rng rng = mc_rng_derive(mc_test_seed(2005u), 0u);
+    uint64_t seed = mc_test_seed(2005u);
+    mc_rng rng = mc_rng_derive(seed, 0u);
     mc_welford w = mc_welford_init();
     for (int i = 0; i < N; i++)
         mc_welford_add(&w, mc_rng_uniform(&rng) + 0.002);
     mc_estimate e = mc_welford_estimate(&w);
-    assert_true(fabs(mc_z_score(e.value, 0.5, e.std_error)) >= 4.0);
+    bool mean_caught = negctl_record(t, "mean biased by 0.002", "z-test",
+                                     fabs(mc_z_score(e.value, 0.5, e.std_error)) >= 4.0);
     double wrong_var = w.m2 / (N / 2.0);
     double var_se = sqrt((1.0 / 80.0 - 1.0 / 144.0) / N);
-    assert_true(fabs(mc_z_score(wrong_var, 1.0 / 12.0, var_se)) >= 4.0);
+    bool var_caught = negctl_record(t, "variance divided by n/2", "z-test",
+                                    fabs(mc_z_score(wrong_var, 1.0 / 12.0, var_se)) >= 4.0);
+    assert_seeded(mean_caught && var_caught, seed);
 }
 
 static void test_z_score_and_pvalue(void **state)
@@ -225,5 +233,6 @@ int main(void)
         cmocka_unit_test(test_chi2_pvalue_upper_tail),
         cmocka_unit_test(test_sidak_alpha),
     };
-    return cmocka_run_group_tests_name("test_stats", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("test_stats", tests, negctl_group_setup,
+                                       negctl_group_teardown);
 }

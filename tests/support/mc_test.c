@@ -64,6 +64,14 @@ void mc_assert_z_impl(const char *label, double estimate, double exact, double s
     _fail(file, line);
 }
 
+void mc_assert_seeded_impl(bool cond, const char *scond, uint64_t seed, const char *file, int line)
+{
+    if (cond)
+        return;
+    print_error("%s is false, seed %llu\n", scond, (unsigned long long)seed);
+    _fail(file, line);
+}
+
 const char *mc_test_build_dir(void)
 {
     const char *b = getenv("MC_BUILD");

@@ -36,6 +36,13 @@ void mc_assert_near_impl(double a, double b, double tol, const char *sa, const c
 void mc_assert_z_impl(const char *label, double estimate, double exact, double std_error,
                       double threshold, uint64_t seed, const char *file, int line);
 
+/* assert_true for a statistical check that is not a z-test (a comparison
+ * of error sums, a chi-square verdict, a negative control's catch): fails
+ * unless cond holds, printing the condition and the seed of its data.
+ * Where the check pools several seeds, seed is the first of them. */
+#define assert_seeded(cond, seed) mc_assert_seeded_impl((cond), #cond, (seed), __FILE__, __LINE__)
+void mc_assert_seeded_impl(bool cond, const char *scond, uint64_t seed, const char *file, int line);
+
 /* The directory holding the build under test ($MC_BUILD, default "build"). */
 const char *mc_test_build_dir(void);
 
