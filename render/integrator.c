@@ -225,7 +225,8 @@ static vec3 arriving(const rt_scene *s, rt_ray r, uint64_t *segments)
 
 /* The power heuristic a^2 / (a^2 + b^2) for the strategy with density a,
  * written as 1 / (1 + (b/a)^2) so that an infinite a (the cone pdf of a
- * vanishingly small sphere light) gives 1 instead of inf/inf = NaN, and a
+ * sphere light so small that R^2 / d^2 underflows, R / d < ~1e-154) gives
+ * 1 instead of inf/inf = NaN, and a
  * huge ratio overflows to weight 0 rather than to NaN. a == 0: that strategy
  * could not have drawn the direction, so it gets nothing. */
 static double power_weight(double a, double b)
