@@ -56,8 +56,7 @@ pdf_chart pdf_chart_quad_and_cap(vec3 origin, vec3 corner, vec3 u, vec3 v, vec3 
     vec3 axis = vec3_sub(center, origin);
     c.kind = PDF_CHART_QUAD_AND_CAP;
     c.frame = onb_from_w(vec3_normalize(axis));
-    c.cos_lo = smp_sphere_cone_cos_theta_max(vec3_length_sq(axis), radius);
-    c.one_minus_cos_lo = smp_sphere_cone_one_minus_cos(vec3_length_sq(axis), radius);
+    c.one_minus_cos_lo = smp_sphere_cone_cap(vec3_length_sq(axis), radius, &c.cos_lo);
     return c;
 }
 

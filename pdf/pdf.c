@@ -59,8 +59,7 @@ pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius)
     /* At the centre any axis will do: the cone is then the whole sphere. */
     p.as.sphere.frame = onb_from_w(dist_sq > 0.0 ? vec3_scale(axis, 1.0 / sqrt(dist_sq))
                                                  : vec3_make(0.0, 0.0, 1.0));
-    p.as.sphere.cos_theta_max = smp_sphere_cone_cos_theta_max(dist_sq, radius);
-    p.as.sphere.one_minus_cos = smp_sphere_cone_one_minus_cos(dist_sq, radius);
+    p.as.sphere.one_minus_cos = smp_sphere_cone_cap(dist_sq, radius, &p.as.sphere.cos_theta_max);
     return p;
 }
 

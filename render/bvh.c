@@ -247,6 +247,26 @@ int rt_bvh_build(rt_bvh *bvh, rt_prim *prims, int n)
     for (int i = 0; i < bvh->n_nodes; i++)
         if (bvh->nodes[i].count > 0)
             pack_leaf(bvh, &bvh->nodes[i], prims);
+    const rt_bvh_node *root = &bvh->nodes[0];
+    if (root->count > 0 && root->n_quads > 0) {
+        /* 448 bytes a quad: a multiple of 64, so every row is aligned. */
+        bvh->root_quads = aligned_alloc(64, (size_t)root->n_quads * sizeof *bvh->root_quads);
+        if (!bvh->root_quads) {
+            rt_bvh_destroy(bvh);
+            return -1;
+        }
+        for (int q = 0; q < root->n_quads; q++) {
+            const rt_quad_packet *pk = &bvh->packets[root->packet + q / RT_PACKET];
+            int j = q % RT_PACKET;
+            const double *fields[13] = {pk->nx, pk->ny, pk->nz, pk->plane, pk->qx, pk->qy, pk->qz,
+                                        pk->ax, pk->ay, pk->az, pk->bx, pk->by, pk->bz};
+            for (int k = 0; k < RT_BVH_LANES; k++) {
+                for (int f = 0; f < 13; f++)
+                    bvh->root_quads[q].f[f][k] = fields[f][j];
+                bvh->root_quads[q].prim[k] = pk->prim[j];
+            }
+        }
+    }
     return 0;
 }
 
@@ -254,6 +274,7 @@ void rt_bvh_destroy(rt_bvh *bvh)
 {
     free(bvh->nodes);
     free(bvh->packets);
+    free(bvh->root_quads);
     memset(bvh, 0, sizeof *bvh);
 }
 
@@ -558,33 +579,30 @@ __attribute__((target("avx2"))) static unsigned hit4_leaf_avx2(const rt_bvh *bvh
     __m256d best = _mm256_set1_pd(tmax);
     __m256d best_i = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
     const rt_bvh_node *nd = &bvh->nodes[0];
-    const rt_quad_packet *pk = &bvh->packets[nd->packet];
     for (int q = 0; q < nd->n_quads; q++) {
-        const rt_quad_packet *p = &pk[q / RT_PACKET];
-        int j = q % RT_PACKET;
-        __m256d nx = _mm256_set1_pd(p->nx[j]), ny = _mm256_set1_pd(p->ny[j]),
-                nz = _mm256_set1_pd(p->nz[j]);
+        const rt_quad_lanes *w = &bvh->root_quads[q];
+        __m256d nx = _mm256_load_pd(w->f[0]), ny = _mm256_load_pd(w->f[1]), nz = _mm256_load_pd(w->f[2]);
         __m256d dn = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)),
                                    _mm256_mul_pd(nz, dz));
         __m256d on = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, ox), _mm256_mul_pd(ny, oy)),
                                    _mm256_mul_pd(nz, oz));
-        __m256d t = _mm256_div_pd(_mm256_sub_pd(_mm256_set1_pd(p->plane[j]), on), dn);
-        __m256d hx = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), _mm256_set1_pd(p->qx[j]));
-        __m256d hy = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), _mm256_set1_pd(p->qy[j]));
-        __m256d hz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), _mm256_set1_pd(p->qz[j]));
-        __m256d a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_set1_pd(p->ax[j])),
-                                                _mm256_mul_pd(hy, _mm256_set1_pd(p->ay[j]))),
-                                  _mm256_mul_pd(hz, _mm256_set1_pd(p->az[j])));
-        __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_set1_pd(p->bx[j])),
-                                                _mm256_mul_pd(hy, _mm256_set1_pd(p->by[j]))),
-                                  _mm256_mul_pd(hz, _mm256_set1_pd(p->bz[j])));
+        __m256d t = _mm256_div_pd(_mm256_sub_pd(_mm256_load_pd(w->f[3]), on), dn);
+        __m256d hx = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), _mm256_load_pd(w->f[4]));
+        __m256d hy = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), _mm256_load_pd(w->f[5]));
+        __m256d hz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), _mm256_load_pd(w->f[6]));
+        __m256d a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_load_pd(w->f[7])),
+                                                _mm256_mul_pd(hy, _mm256_load_pd(w->f[8]))),
+                                  _mm256_mul_pd(hz, _mm256_load_pd(w->f[9])));
+        __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_load_pd(w->f[10])),
+                                                _mm256_mul_pd(hy, _mm256_load_pd(w->f[11]))),
+                                  _mm256_mul_pd(hz, _mm256_load_pd(w->f[12])));
         __m256d ok = _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ), _mm256_cmp_pd(t, best, _CMP_LT_OQ));
         ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ),
                                               _mm256_cmp_pd(a, one, _CMP_LE_OQ)));
         ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
                                               _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
         best = _mm256_blendv_pd(best, t, ok);
-        best_i = _mm256_blendv_pd(best_i, _mm256_castsi256_pd(_mm256_set1_epi64x(p->prim[j])), ok);
+        best_i = _mm256_blendv_pd(best_i, _mm256_load_pd((const double *)(const void *)w->prim), ok);
     }
     for (int i = nd->first + nd->n_quads; i < nd->first + nd->count; i++) {
         const rt_sphere *s = &prims[i].as.sphere;

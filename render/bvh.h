@@ -54,12 +54,24 @@ typedef struct rt_quad_packet {
                               * the width of a double, for vector blends) */
 } rt_quad_packet;
 
+/* Rays traced together by rt_bvh_hit4. */
+#define RT_BVH_LANES 4
+
+/* One quad with every field repeated RT_BVH_LANES times (the order of
+ * rt_quad_packet's fields): what rt_bvh_hit4 tests RT_BVH_LANES rays
+ * against with plain vector loads, no broadcasts. */
+typedef struct rt_quad_lanes {
+    double f[13][RT_BVH_LANES];
+    int64_t prim[RT_BVH_LANES];
+} rt_quad_lanes;
+
 typedef struct rt_bvh {
     rt_bvh_node *nodes; /* nodes[0] is the root */
     int n_nodes;
     int depth;          /* levels below the root, < RT_BVH_MAX_DEPTH (checked by rt_bvh_build) */
     rt_quad_packet *packets;
     int n_packets;
+    rt_quad_lanes *root_quads; /* the root's quads when the root is a leaf, else NULL */
 } rt_bvh;
 
 /* Builds the hierarchy over prims[0..n) (n >= 1), reordering the array so
@@ -85,9 +97,6 @@ double rt_bvh_closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double 
  * renderer's query: one call, the ray passed by address). */
 bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
                 rt_hit *h);
-
-/* Rays traced together by rt_bvh_hit4. */
-#define RT_BVH_LANES 4
 
 /* rt_bvh_hit for RT_BVH_LANES rays at once: h[k] is filled in for every
  * ray r[k] that meets a primitive in (tmin, tmax), and bit k of the result

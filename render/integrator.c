@@ -7,6 +7,7 @@
 
 #include "mc/constants.h"
 #include "mc/onb.h"
+#include "render/lights4.h"
 #include "samplers/hemisphere.h"
 
 _Static_assert(RT_MAX_LIGHTS <= RT_LIGHTS_AT_MAX, "rt_lights_at holds every light of a scene");
@@ -97,36 +98,62 @@ static double material_value(const rt_path_settings *ps, const rt_scatter *sr, v
     return pdf_value(&cosine, d);
 }
 
-/* The chapter-8 mixture 1/2 lights + 1/2 material: one direction and the
- * mixture density there (with the negative-control scale on the light
- * part). The fast body repeats pdf_mixture's choice (component 0 when the
- * uniform is below its weight) and its sum in component order. */
+/* The chapter-8 mixture weights: 1/2 lights + 1/2 material. */
+static const double mixture_weights[2] = {0.5, 0.5};
+
+/* The fast mixture's draw from the light list prepared at the hit point:
+ * pdf_mixture's choice (component 0 when the uniform is below its
+ * weight), then that component's generate. */
+static vec3 mixture_draw(const rt_path_settings *ps, const rt_scatter *sr, const rt_lights_at *at,
+                         mc_rng *rng)
+{
+    return mc_rng_uniform(rng) < mixture_weights[0] ? rt_lights_at_generate(at, rng)
+                                                    : material_generate(ps, sr, rng);
+}
+
+/* mixture_draw with the lights prepared in lane k of at4. */
+static vec3 mixture_draw4(const rt_path_settings *ps, const rt_scatter *sr, const rt_lights4 *at4,
+                          int k, mc_rng *rng)
+{
+    return mc_rng_uniform(rng) < mixture_weights[0] ? rt_lights4_generate(at4, k, rng)
+                                                    : material_generate(ps, sr, rng);
+}
+
+/* The fast mixture's density at dir given the light list's density there
+ * (with the negative-control scale), summed in pdf_mixture's order. */
+static double mixture_density(const rt_path_settings *ps, const rt_scatter *sr, vec3 dir,
+                              double light_value)
+{
+    double sum = 0.0;
+    sum += mixture_weights[0] * (light_value * ps->light_pdf_scale);
+    sum += mixture_weights[1] * material_value(ps, sr, dir);
+    return sum;
+}
+
+/* The chapter-8 mixture: one direction and the mixture density there
+ * (with the negative-control scale on the light part), by the pdf objects
+ * or by the fast densities (the same numbers). */
 static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, const rt_hit *h,
                              const rt_scatter *sr, mc_rng *rng, vec3 *dir)
 {
-    static const double weights[2] = {0.5, 0.5};
     if (ps->pdf_objects) {
         pdf items[RT_MAX_LIGHTS];
         const pdf *ptrs[RT_MAX_LIGHTS];
         pdf lights = rt_scene_lights_pdf(s, h->p, items, ptrs), cosine = rt_scatter_pdf(sr);
         const pdf *comps[2] = {&lights, &cosine};
-        pdf mix = pdf_mixture(comps, weights, 2);
+        pdf mix = pdf_mixture(comps, mixture_weights, 2);
         *dir = pdf_generate(&mix, rng);
         double p = pdf_value(&mix, *dir);
         if (ps->light_pdf_scale != 1.0)
-            p += weights[0] * (ps->light_pdf_scale - 1.0) * pdf_value(&lights, *dir);
+            p += mixture_weights[0] * (ps->light_pdf_scale - 1.0) * pdf_value(&lights, *dir);
         return p;
     }
     /* The light densities toward the hit point are prepared once for the
      * draw and the value (the same expressions: the same bits). */
     rt_lights_at at;
     rt_lights_prepare(&at, rt_scene_lights(s), rt_scene_light_count(s), h->p);
-    *dir = mc_rng_uniform(rng) < weights[0] ? rt_lights_at_generate(&at, rng)
-                                            : material_generate(ps, sr, rng);
-    double sum = 0.0;
-    sum += weights[0] * (rt_lights_at_value(&at, *dir) * ps->light_pdf_scale);
-    sum += weights[1] * material_value(ps, sr, *dir);
-    return sum;
+    *dir = mixture_draw(ps, sr, &at, rng);
+    return mixture_density(ps, sr, *dir, rt_lights_at_value(&at, *dir));
 }
 
 /* --- the book's integrator ---------------------------------------------- */
@@ -160,41 +187,82 @@ rt_path_state rt_path_begin(const rt_path_settings *ps, rt_ray r)
     return p;
 }
 
-void rt_path_step(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
-                  const rt_hit *h, mc_rng *rng)
+/* The end of every step that goes on: roulette, then the depth limit. */
+static void path_next(const rt_path_settings *ps, rt_path_state *p, mc_rng *rng)
 {
-    if (!h) {
-        p->L = vec3_add(p->L, vec3_mul(p->beta, rt_scene_background(s)));
-        p->done = true;
-        return;
-    }
-    const rt_material *m = rt_scene_material(s, h->material);
-    p->L = vec3_add(p->L, vec3_mul(p->beta, rt_material_emitted(m, h)));
-    rt_scatter sr;
-    if (!rt_material_scatter(m, p->ray, h, rng, &sr)) {
-        p->done = true;
-        return;
-    }
-    if (sr.specular) {
-        p->beta = vec3_mul(p->beta, sr.attenuation);
-        p->ray = sr.ray;
-    } else {
-        vec3 dir;
-        double pd = diffuse_direction(s, ps, h, &sr, rng, &dir);
-        double sp = rt_material_scattering_pdf(m, h, dir);
-        /* Below the surface the integrand is 0: nothing more to add. */
-        if (!(sp > 0.0)) {
-            p->done = true;
-            return;
-        }
-        p->beta = vec3_scale(vec3_mul(p->beta, sr.attenuation), sp / pd);
-        p->ray = rt_ray_make(h->p, dir);
-    }
     /* The flag is tested here too so that, off, the call is skipped. */
     if (ps->russian_roulette && !roulette(ps, p->depth, &p->beta, rng))
         p->done = true;
     else if (++p->depth >= ps->max_depth)
         p->done = true;
+}
+
+bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
+                     const rt_hit *h, mc_rng *rng, rt_path_vertex *v)
+{
+    if (!h) {
+        p->L = vec3_add(p->L, vec3_mul(p->beta, rt_scene_background(s)));
+        p->done = true;
+        return false;
+    }
+    const rt_material *m = rt_scene_material(s, h->material);
+    p->L = vec3_add(p->L, vec3_mul(p->beta, rt_material_emitted(m, h)));
+    if (!rt_material_scatter(m, p->ray, h, rng, &v->sr)) {
+        p->done = true;
+        return false;
+    }
+    if (v->sr.specular) {
+        p->beta = vec3_mul(p->beta, v->sr.attenuation);
+        p->ray = v->sr.ray;
+        path_next(ps, p, rng);
+        return false;
+    }
+    v->p = h->p;
+    v->normal = h->normal;
+    v->m = m;
+    return true;
+}
+
+/* The rest of a diffuse step, along dir drawn with density pd. */
+static void path_turn(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
+                      vec3 dir, double pd, mc_rng *rng)
+{
+    rt_hit h = {.p = v->p, .normal = v->normal};
+    double sp = rt_material_scattering_pdf(v->m, &h, dir);
+    /* Below the surface the integrand is 0: nothing more to add. */
+    if (!(sp > 0.0)) {
+        p->done = true;
+        return;
+    }
+    p->beta = vec3_scale(vec3_mul(p->beta, v->sr.attenuation), sp / pd);
+    p->ray = rt_ray_make(v->p, dir);
+    path_next(ps, p, rng);
+}
+
+void rt_path_continue(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
+                      const rt_path_vertex *v, mc_rng *rng)
+{
+    vec3 dir;
+    rt_hit h = {.p = v->p, .normal = v->normal};
+    double pd = diffuse_direction(s, ps, &h, &v->sr, rng, &dir);
+    path_turn(ps, p, v, dir, pd, rng);
+}
+
+bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps)
+{
+    return ps->strategy == RT_MIXTURE && !ps->pdf_objects && rt_scene_light_count(s) > 0;
+}
+
+vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const rt_lights4 *at4,
+                  int k, mc_rng *rng)
+{
+    return mixture_draw4(ps, &v->sr, at4, k, rng);
+}
+
+void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
+                    vec3 dir, double light_value, mc_rng *rng)
+{
+    path_turn(ps, p, v, dir, mixture_density(ps, &v->sr, dir, light_value), rng);
 }
 
 static vec3 book_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
@@ -203,9 +271,11 @@ static vec3 book_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray 
     rt_path_state p = rt_path_begin(ps, r);
     while (!p.done) {
         rt_hit h;
+        rt_path_vertex v;
         ++*segments;
         bool hit = rt_scene_hit(s, p.ray, HUGE_VAL, &h);
-        rt_path_step(s, ps, &p, hit ? &h : NULL, rng);
+        if (rt_path_scatter(s, ps, &p, hit ? &h : NULL, rng, &v))
+            rt_path_continue(s, ps, &p, &v, rng);
     }
     return p.L;
 }

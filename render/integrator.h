@@ -33,6 +33,7 @@
 
 #include "mc/rng.h"
 #include "mc/vec3.h"
+#include "render/lights4.h"
 #include "render/ray.h"
 #include "render/scene.h"
 
@@ -78,7 +79,8 @@ vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r, mc
 /* The book's integrator one segment at a time, so that a caller can
  * trace the segments of several paths together (rt_scene_hit4): a path
  * is begun with its camera ray, then, while it is not done, its ray is
- * traced and the result handed to rt_path_step. The result is that of
+ * traced and the result handed to rt_path_scatter and rt_path_continue
+ * (below). The result is that of
  * rt_radiance, number for number, for the strategies where
  * rt_path_steppable is true (uniform, cosine, mixture). */
 typedef struct rt_path_state {
@@ -95,9 +97,35 @@ bool rt_path_steppable(const rt_path_settings *ps);
 /* A path starting along r (done at once when max_depth is 0). */
 rt_path_state rt_path_begin(const rt_path_settings *ps, rt_ray r);
 
-/* Advances p by the segment p->ray just traced: h is its hit, or NULL if
- * it left the scene. Draws from rng as rt_radiance does at that point. */
-void rt_path_step(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
-                  const rt_hit *h, mc_rng *rng);
+/* A diffuse vertex between the two halves of a step. */
+typedef struct rt_path_vertex {
+    vec3 p, normal;       /* the hit point and the normal facing the ray */
+    rt_scatter sr;        /* the material's scatter record there */
+    const rt_material *m; /* the material */
+} rt_path_vertex;
+
+/* A step is two calls, so that a caller with several paths can batch the
+ * work between them. rt_path_scatter advances p by the segment p->ray just
+ * traced (h is its hit, or NULL if it left the scene) up to the choice of
+ * the next direction: it returns true at a diffuse hit, having filled in
+ * *v, and rt_path_continue(p, v) must then follow before the next
+ * segment; false when the step is complete. Both draw from rng exactly as
+ * rt_radiance does at that point. */
+bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
+                     const rt_hit *h, mc_rng *rng, rt_path_vertex *v);
+void rt_path_continue(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
+                      const rt_path_vertex *v, mc_rng *rng);
+
+/* True when rt_path_continue is the chapter-8 mixture with the fast
+ * densities of render/lights.h: then it may also be done in three parts,
+ * with the light list prepared at the vertices of four paths and
+ * evaluated by the caller (render/lights4.h): dir = rt_path_draw(v, at4,
+ * lane), value = the light list's density at dir (rt_lights4_value),
+ * rt_path_finish(v, dir, value). The same numbers as rt_path_continue. */
+bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps);
+vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const rt_lights4 *at4,
+                  int k, mc_rng *rng);
+void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
+                    vec3 dir, double light_value, mc_rng *rng);
 
 #endif /* RT_INTEGRATOR_H */

@@ -81,8 +81,7 @@ static inline vec3 rt_light_cone_axis(const rt_light *l, vec3 origin, double *co
 {
     vec3 axis = vec3_sub(l->center, origin);
     double dist_sq = vec3_length_sq(axis);
-    *cos_max = smp_sphere_cone_cos_theta_max(dist_sq, l->radius);
-    *one_minus_cos = smp_sphere_cone_one_minus_cos(dist_sq, l->radius);
+    *one_minus_cos = smp_sphere_cone_cap(dist_sq, l->radius, cos_max);
     return dist_sq > 0.0 ? vec3_scale(axis, 1.0 / sqrt(dist_sq)) : vec3_make(0.0, 0.0, 1.0);
 }
 
@@ -105,17 +104,25 @@ static inline void rt_lights_prepare(rt_lights_at *at, const rt_light *lights, i
 
 /* rt_lights_generate from the prepared origin: the same direction from
  * the same uniforms. */
+/* The direction toward light l drawn from the uniforms u1, u2: a point of
+ * the quad, or a direction of the sphere's cone (axis and 1 - cos
+ * theta_max as prepared from origin). */
+static inline vec3 rt_light_generate(const rt_light *l, vec3 origin, vec3 axis,
+                                     double one_minus_cos, double u1, double u2)
+{
+    if (l->kind == RT_PRIM_QUAD) {
+        vec3 x = smp_parallelogram_sample(u1, u2, l->q, l->u, l->v);
+        return vec3_normalize(vec3_sub(x, origin));
+    }
+    onb frame = onb_from_w(axis);
+    return onb_to_world(&frame, smp_uniform_cap_sample(u1, u2, one_minus_cos));
+}
+
 static inline vec3 rt_lights_at_generate(const rt_lights_at *at, mc_rng *rng)
 {
     uint32_t i = mc_rng_bounded(rng, (uint32_t)at->n);
-    const rt_light *l = &at->lights[i];
     double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-    if (l->kind == RT_PRIM_QUAD) {
-        vec3 x = smp_parallelogram_sample(u1, u2, l->q, l->u, l->v);
-        return vec3_normalize(vec3_sub(x, at->origin));
-    }
-    onb frame = onb_from_w(at->axis[i]);
-    return onb_to_world(&frame, smp_uniform_cap_sample(u1, u2, at->one_minus_cos[i]));
+    return rt_light_generate(&at->lights[i], at->origin, at->axis[i], at->one_minus_cos[i], u1, u2);
 }
 
 /* pdf_toward_quad's value with its numerator normal . (q - origin) given. */

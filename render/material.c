@@ -18,10 +18,12 @@ rt_material rt_metal(vec3 albedo, double fuzz)
     return m;
 }
 
+static double schlick_r0(double n1, double n2);
+
 rt_material rt_dielectric(double ior, rt_fresnel fresnel)
 {
     rt_material m = {.kind = RT_MAT_DIELECTRIC, .albedo = vec3_make(1.0, 1.0, 1.0), .ior = ior,
-                     .fresnel = fresnel};
+                     .fresnel = fresnel, .inv_ior = 1.0 / ior, .schlick_r0 = schlick_r0(1.0, ior)};
     return m;
 }
 
@@ -49,13 +51,17 @@ bool rt_refract(vec3 d, vec3 n, double eta, vec3 *out)
     return true;
 }
 
-/* cos theta_t from cos theta_i by Snell's law; -1 under total internal
- * reflection. */
-static double transmitted_cos(double cos_i, double n1, double n2)
+/* cos theta_t from cos theta_i by Snell's law with eta = n1 / n2; -1
+ * under total internal reflection. */
+static double transmitted_cos_eta(double cos_i, double eta)
 {
-    double eta = n1 / n2;
     double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
     return sin2_t >= 1.0 ? -1.0 : sqrt(1.0 - sin2_t);
+}
+
+static double transmitted_cos(double cos_i, double n1, double n2)
+{
+    return transmitted_cos_eta(cos_i, n1 / n2);
 }
 
 double rt_fresnel_exact(double cos_i, double n1, double n2)
@@ -77,21 +83,31 @@ static double schlick(double r0, double c)
     return r0 + (1.0 - r0) * m2 * m2 * m;
 }
 
-double rt_fresnel_schlick(double cos_i, double n1, double n2)
+/* ((n1 - n2) / (n1 + n2))^2: Schlick's reflectance at normal incidence. */
+static double schlick_r0(double n1, double n2)
 {
     double r0 = (n1 - n2) / (n1 + n2);
-    r0 *= r0;
-    if (n1 <= n2)
+    return r0 * r0;
+}
+
+/* rt_fresnel_schlick with r0, eta = n1 / n2 and whether the incident side
+ * is the rarer one (n1 <= n2) given. */
+static double fresnel_schlick_given(double cos_i, double r0, double eta, bool rarer_incident)
+{
+    if (rarer_incident)
         return schlick(r0, cos_i);
-    double cos_t = transmitted_cos(cos_i, n1, n2);
+    double cos_t = transmitted_cos_eta(cos_i, eta);
     return cos_t < 0.0 ? 1.0 : schlick(r0, cos_t);
+}
+
+double rt_fresnel_schlick(double cos_i, double n1, double n2)
+{
+    return fresnel_schlick_given(cos_i, schlick_r0(n1, n2), n1 / n2, n1 <= n2);
 }
 
 double rt_fresnel_schlick_book(double cos_i, double n1, double n2)
 {
-    double r0 = (n1 - n2) / (n1 + n2);
-    r0 *= r0;
-    return transmitted_cos(cos_i, n1, n2) < 0.0 ? 1.0 : schlick(r0, cos_i);
+    return transmitted_cos(cos_i, n1, n2) < 0.0 ? 1.0 : schlick(schlick_r0(n1, n2), cos_i);
 }
 
 /* Glass: reflect with the probability of the Fresnel reflectance, refract
@@ -101,12 +117,14 @@ static void scatter_glass(const rt_material *m, rt_ray in, const rt_hit *h, mc_r
                           rt_scatter *s)
 {
     double n1 = h->front_face ? 1.0 : m->ior, n2 = h->front_face ? m->ior : 1.0;
+    double eta = h->front_face ? m->inv_ior : m->ior; /* n1 / n2 exactly (ior / 1 = ior) */
     double cos_i = -vec3_dot(in.dir, h->normal);
     cos_i = cos_i < 1.0 ? cos_i : 1.0; /* fmin, as in rt_refract */
-    double r = m->fresnel == RT_FRESNEL_EXACT ? rt_fresnel_exact(cos_i, n1, n2)
-                                              : rt_fresnel_schlick(cos_i, n1, n2);
+    double r = m->fresnel == RT_FRESNEL_EXACT
+                   ? rt_fresnel_exact(cos_i, n1, n2)
+                   : fresnel_schlick_given(cos_i, m->schlick_r0, eta, n1 <= n2);
     vec3 dir;
-    if (r >= 1.0 || mc_rng_uniform(rng) < r || !rt_refract(in.dir, h->normal, n1 / n2, &dir))
+    if (r >= 1.0 || mc_rng_uniform(rng) < r || !rt_refract(in.dir, h->normal, eta, &dir))
         dir = rt_reflect(in.dir, h->normal);
     s->specular = true;
     s->attenuation = m->albedo;

@@ -41,6 +41,11 @@ typedef struct rt_material {
     double fuzz;        /* metal: radius of the perturbing sphere, in [0, 1] */
     double ior;         /* dielectric: index of refraction inside / outside */
     rt_fresnel fresnel; /* dielectric: which reflectance */
+    /* Dielectric, set by rt_dielectric (glass is hit at every other
+     * segment in the book's scene; these save two divisions a hit):
+     * 1 / ior, and Schlick's R0 = ((ior - 1) / (ior + 1))^2, the same
+     * number from either side since n1 - n2 = -(n2 - n1) exactly. */
+    double inv_ior, schlick_r0;
 } rt_material;
 
 /* Ideal diffuse reflector of the given albedo. */

@@ -6,6 +6,9 @@
 #include <stdlib.h>
 
 #include "mc/strat.h"
+#include "render/lights4.h"
+
+_Static_assert(RT_BVH_LANES == RT_LIGHTS4_LANES, "one light-density lane per traced path");
 
 rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera)
 {
@@ -130,6 +133,43 @@ static void lane_take(lane *l, const rt_render_job *job, const jitter *jt, mc_rn
     l->path = rt_path_begin(&job->path, sample_ray(job, jt, x, y, k0, &l->c, &l->rng));
 }
 
+/* The second half of the step of the lanes at a diffuse vertex: for the
+ * fast mixture, the light densities of the four vertices are prepared and
+ * evaluated together (render/lights4.h), lanes without a vertex standing
+ * in with a copy of one that has. */
+static void turn_diffuse(const rt_render_job *job, lane *lanes, const rt_path_vertex *verts,
+                         const bool *diffuse)
+{
+    const rt_scene *s = job->scene;
+    int any = -1;
+    for (int i = 0; i < RT_BVH_LANES; i++)
+        if (diffuse[i])
+            any = i;
+    if (any < 0)
+        return;
+    if (!rt_path_batches_lights(s, &job->path)) {
+        for (int i = 0; i < RT_BVH_LANES; i++)
+            if (diffuse[i])
+                rt_path_continue(s, &job->path, &lanes[i].path, &verts[i], &lanes[i].rng);
+        return;
+    }
+    vec3 at_p[RT_LIGHTS4_LANES], dirs[RT_LIGHTS4_LANES];
+    for (int i = 0; i < RT_BVH_LANES; i++)
+        at_p[i] = verts[diffuse[i] ? i : any].p;
+    rt_lights4 at4;
+    rt_lights4_prepare(&at4, rt_scene_lights(s), rt_scene_light_count(s), at_p);
+    for (int i = 0; i < RT_BVH_LANES; i++)
+        if (diffuse[i])
+            dirs[i] = rt_path_draw(&job->path, &verts[i], &at4, i, &lanes[i].rng);
+    for (int i = 0; i < RT_BVH_LANES; i++)
+        dirs[i] = dirs[diffuse[i] ? i : any];
+    double values[RT_LIGHTS4_LANES];
+    rt_lights4_value(&at4, dirs, values);
+    for (int i = 0; i < RT_BVH_LANES; i++)
+        if (diffuse[i])
+            rt_path_finish(&job->path, &lanes[i].path, &verts[i], dirs[i], values[i], &lanes[i].rng);
+}
+
 /* render_row for the book's integrator, RT_BVH_LANES paths at a time:
  * each lane takes a pixel and traces its samples one after the other,
  * exactly as render_row does (the same stream, the same order, so the
@@ -158,14 +198,21 @@ static void render_row4(const rt_render_job *job, rt_image *img, mc_rng *streams
         for (int i = 0; i < RT_BVH_LANES; i++)
             rays[i] = lanes[i].x >= 0 && !lanes[i].path.done ? lanes[i].path.ray : lanes[any].path.ray;
         unsigned hit = rt_scene_hit4(job->scene, rays, HUGE_VAL, hits);
+        rt_path_vertex verts[RT_BVH_LANES];
+        bool diffuse[RT_BVH_LANES] = {false};
+        for (int i = 0; i < RT_BVH_LANES; i++) {
+            lane *l = &lanes[i];
+            if (l->x >= 0 && !l->path.done) {
+                ++*segments;
+                diffuse[i] = rt_path_scatter(job->scene, &job->path, &l->path,
+                                             (hit >> i) & 1u ? &hits[i] : NULL, &l->rng, &verts[i]);
+            }
+        }
+        turn_diffuse(job, lanes, verts, diffuse);
         for (int i = 0; i < RT_BVH_LANES; i++) {
             lane *l = &lanes[i];
             if (l->x < 0)
                 continue;
-            if (!l->path.done) {
-                ++*segments;
-                rt_path_step(job->scene, &job->path, &l->path, (hit >> i) & 1u ? &hits[i] : NULL, &l->rng);
-            }
             /* Finished samples go to the pixel; a sample of depth 0 is
              * finished as soon as it begins. */
             while (l->x >= 0 && l->path.done) {

@@ -57,24 +57,34 @@ vec2 smp_uniform_cone_invert(vec3 w, double cos_theta_max)
     return smp_uniform_cap_invert(w, 1.0 - cos_theta_max);
 }
 
-double smp_sphere_cone_cos_theta_max(double dist_sq, double radius)
+double smp_sphere_cone_cap(double dist_sq, double radius, double *cos_theta_max)
 {
     double r2 = radius * radius;
     /* From inside (or on) the sphere every ray hits it: the whole sphere of
-     * directions, where the book's sqrt(1 - R^2/d^2) is NaN. */
-    if (!(dist_sq > r2))
-        return -1.0;
-    return sqrt((dist_sq - r2) / dist_sq);
+     * directions (cos theta_max = -1), where the book's sqrt(1 - R^2/d^2) is
+     * NaN. */
+    if (!(dist_sq > r2)) {
+        *cos_theta_max = -1.0;
+        return 2.0;
+    }
+    /* (d^2 - R^2) / d^2 cannot exceed 1, unlike 1 - R^2/d^2 rounded. */
+    double c = sqrt((dist_sq - r2) / dist_sq);
+    *cos_theta_max = c;
+    /* 1 - cos = (1 - cos^2) / (1 + cos) = sin^2 theta_max / (1 + cos): a
+     * quotient of two accurate numbers (sin^2 = R^2 / d^2 to an ulp, and
+     * 1 + cos in [1, 2]), where 1 - cos subtracts two nearly equal ones. */
+    return (r2 / dist_sq) / (1.0 + c);
+}
+
+double smp_sphere_cone_cos_theta_max(double dist_sq, double radius)
+{
+    double c;
+    smp_sphere_cone_cap(dist_sq, radius, &c);
+    return c;
 }
 
 double smp_sphere_cone_one_minus_cos(double dist_sq, double radius)
 {
-    double r2 = radius * radius;
-    if (!(dist_sq > r2))
-        return 2.0;
-    /* 1 - cos = (1 - cos^2) / (1 + cos) = sin^2 theta_max / (1 + cos): a
-     * quotient of two accurate numbers (sin^2 = R^2 / d^2 to an ulp, and
-     * 1 + cos in [1, 2]), where 1 - cos subtracts two nearly equal ones. */
-    double sin2 = r2 / dist_sq;
-    return sin2 / (1.0 + sqrt((dist_sq - r2) / dist_sq));
+    double c;
+    return smp_sphere_cone_cap(dist_sq, radius, &c);
 }

@@ -85,4 +85,10 @@ double smp_sphere_cone_cos_theta_max(double dist_sq, double radius);
  * normal doubles (radius > 1.5e-154 and R / d > 1.5e-154). */
 double smp_sphere_cone_one_minus_cos(double dist_sq, double radius);
 
+/* Both numbers of the cone at once, from one square root and the same
+ * expressions: *cos_theta_max receives smp_sphere_cone_cos_theta_max and
+ * the result is smp_sphere_cone_one_minus_cos, bit for bit (the pdf
+ * objects and the renderer evaluate them at every diffuse hit). */
+double smp_sphere_cone_cap(double dist_sq, double radius, double *cos_theta_max);
+
 #endif /* SMP_CONE_H */

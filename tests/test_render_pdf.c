@@ -8,6 +8,7 @@
 #include "mc/rng.h"
 #include "pdf/pdf.h"
 #include "render/lights.h"
+#include "render/lights4.h"
 #include "render/render.h"
 #include "render/scenes.h"
 #include "samplers/sphere.h"
@@ -77,6 +78,87 @@ static void test_lights_match_pdf_objects(void **state)
     rt_scene_destroy(s);
 }
 
+/* rt_lights4 (four origins in vector lanes) against render/lights.h lane
+ * by lane, bit for bit: the prepared numbers, the generated directions
+ * and the values, for 25000 batches of four origins and directions
+ * (random, generated toward the lights, and along a quad's plane, where
+ * its density divides by 0). Some origins are the centre of a sphere
+ * light (dist 0) or inside it. */
+static void check_lights4(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
+{
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    const rt_light *fast = rt_scene_lights(s);
+    int n = rt_scene_light_count(s);
+    for (int it = 0; it < 25000; it++) {
+        vec3 o[RT_LIGHTS4_LANES], d[RT_LIGHTS4_LANES];
+        rt_lights_at one[RT_LIGHTS4_LANES];
+        for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
+            o[k] = v3(lo.x + (hi.x - lo.x) * mc_rng_uniform(&rng), lo.y + (hi.y - lo.y) * mc_rng_uniform(&rng),
+                      lo.z + (hi.z - lo.z) * mc_rng_uniform(&rng));
+            const rt_light *l = &fast[mc_rng_bounded(&rng, (uint32_t)n)];
+            if (l->kind == RT_PRIM_SPHERE && it % 97 == 0)
+                o[k] = l->center;
+            rt_lights_prepare(&one[k], fast, n, o[k]);
+        }
+        rt_lights4 at4;
+        rt_lights4_prepare(&at4, fast, n, o);
+        for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
+            for (int i = 0; i < n; i++) {
+                if (fast[i].kind == RT_PRIM_QUAD) {
+                    assert_true(at4.num[i][k] == one[k].num[i]);
+                    continue;
+                }
+                assert_true(same_vec(v3(at4.ax[i][k], at4.ay[i][k], at4.az[i][k]), one[k].axis[i]));
+                assert_true(at4.cos_max[i][k] == one[k].cos_max[i]);
+                assert_true(at4.one_minus_cos[i][k] == one[k].one_minus_cos[i]);
+                assert_true(at4.cone[i][k] == one[k].cone[i]);
+            }
+            mc_rng a = rng, b = rng;
+            vec3 ga = rt_lights4_generate(&at4, k, &a), gb = rt_lights_at_generate(&one[k], &b);
+            assert_true(same_vec(ga, gb) && a.state == b.state);
+            rng = a;
+            int kind = (it + k) % 3;
+            if (kind == 0) {
+                d[k] = ga;
+            } else if (kind == 1) {
+                d[k] = smp_uniform_sphere_sample(mc_rng_uniform(&rng), mc_rng_uniform(&rng));
+            } else {
+                /* in the plane of a quad light, when there is one */
+                const rt_light *l = &fast[mc_rng_bounded(&rng, (uint32_t)n)];
+                d[k] = l->kind == RT_PRIM_QUAD ? vec3_normalize(l->u) : ga;
+            }
+        }
+        double v[RT_LIGHTS4_LANES];
+        rt_lights4_value(&at4, d, v);
+        for (int k = 0; k < RT_LIGHTS4_LANES; k++)
+            if (!(v[k] == rt_lights_at_value(&one[k], d[k])))
+                fail_msg("batch %d lane %d: rt_lights4_value %.17g, rt_lights_at_value %.17g", it, k, v[k],
+                         rt_lights_at_value(&one[k], d[k]));
+    }
+}
+
+static void test_lights4_match_lights(void **state)
+{
+    (void)state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    check_lights4(s, v3(0, 0, 0), v3(555, 555, 555), 34u);
+    rt_scene_destroy(s);
+    /* Five lights of both kinds in mixed order, of very different sizes. */
+    s = rt_scene_create();
+    int white = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    rt_scene_add(s, rt_scene_quad(s, v3(-50, 0, -50), v3(100, 0, 0), v3(0, 0, 100), white));
+    rt_scene_add_light(s, rt_scene_quad(s, v3(-5, 20, -5), v3(10, 0, 0), v3(0, 0, 10), white));
+    rt_scene_add_light(s, rt_scene_sphere(s, v3(10, 5, 3), 4.0, white));
+    rt_scene_add_light(s, rt_scene_quad(s, v3(0, 1, 0), v3(3, 4, 0), v3(0, 0.5, 7), white));
+    rt_scene_add_light(s, rt_scene_sphere(s, v3(-20, 30, 8), 1e-6, white));
+    rt_scene_add_light(s, rt_scene_quad(s, v3(8, -3, 2), v3(0, 6, 1), v3(-2, 0, 5), white));
+    assert_int_equal(rt_scene_build(s), 0);
+    check_lights4(s, v3(-30, -10, -30), v3(30, 40, 30), 35u);
+    rt_scene_destroy(s);
+    printf("rt_lights4 = render/lights.h on 2 x 10^5 origins and directions\n");
+}
+
 /* Whole images in both modes, every strategy, two scenes: the same bits. */
 static void test_images_match_pdf_objects(void **state)
 {
@@ -108,6 +190,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lights_match_pdf_objects),
+        cmocka_unit_test(test_lights4_match_lights),
         cmocka_unit_test(test_images_match_pdf_objects),
     };
     return cmocka_run_group_tests_name("test_render_pdf", tests, NULL, NULL);
