@@ -211,6 +211,55 @@ static void pack_leaf(rt_bvh *bvh, rt_bvh_node *node, rt_prim *prims)
     }
 }
 
+/* The index of the only nonzero (or NaN) coordinate of (x, y, z), -1 if
+ * there is not exactly one. */
+static int single_axis(double x, double y, double z)
+{
+    int nonzero = (x != 0.0) + (y != 0.0) + (z != 0.0);
+    return nonzero != 1 ? -1 : x != 0.0 ? 0 : y != 0.0 ? 1 : 2;
+}
+
+/* Copies the root leaf's quads for rt_bvh_hit4, the axis-aligned ones
+ * first, every field repeated in each lane. 0, or -1 when out of memory. */
+static int lay_out_root(rt_bvh *bvh, const rt_bvh_node *root)
+{
+    _Static_assert(sizeof(rt_quad_axis) % 64 == 0 && sizeof(rt_quad_lanes) % 64 == 0,
+                   "rows of 32-byte lanes stay aligned from one quad to the next");
+    /* 256 and 448 bytes: multiples of 64, so every row is aligned. */
+    size_t nq = (size_t)root->n_quads;
+    bvh->root_axis = aligned_alloc(64, nq * sizeof *bvh->root_axis);
+    bvh->root_quads = aligned_alloc(64, nq * sizeof *bvh->root_quads);
+    if (!bvh->root_axis || !bvh->root_quads)
+        return -1;
+    for (int q = 0; q < root->n_quads; q++) {
+        const rt_quad_packet *pk = &bvh->packets[root->packet + q / RT_PACKET];
+        int j = q % RT_PACKET;
+        const double n[3] = {pk->nx[j], pk->ny[j], pk->nz[j]}, o[3] = {pk->qx[j], pk->qy[j], pk->qz[j]};
+        const double ea[3] = {pk->ax[j], pk->ay[j], pk->az[j]}, eb[3] = {pk->bx[j], pk->by[j], pk->bz[j]};
+        int k = single_axis(n[0], n[1], n[2]), ia = single_axis(ea[0], ea[1], ea[2]),
+            ib = single_axis(eb[0], eb[1], eb[2]);
+        if (k >= 0 && ia >= 0 && ib >= 0) {
+            rt_quad_axis *w = &bvh->root_axis[bvh->n_root_axis++];
+            memset(w, 0, sizeof *w);
+            w->k = k, w->i = ia, w->j = ib;
+            for (int l = 0; l < RT_BVH_LANES; l++) {
+                w->n[l] = n[k], w->plane[l] = pk->plane[j], w->qi[l] = o[ia], w->qj[l] = o[ib];
+                w->ea[l] = ea[ia], w->eb[l] = eb[ib], w->prim[l] = pk->prim[j];
+            }
+            continue;
+        }
+        const double *fields[13] = {pk->nx, pk->ny, pk->nz, pk->plane, pk->qx, pk->qy, pk->qz,
+                                    pk->ax, pk->ay, pk->az, pk->bx, pk->by, pk->bz};
+        rt_quad_lanes *w = &bvh->root_quads[bvh->n_root_quads++];
+        for (int l = 0; l < RT_BVH_LANES; l++) {
+            for (int f = 0; f < 13; f++)
+                w->f[f][l] = fields[f][j];
+            w->prim[l] = pk->prim[j];
+        }
+    }
+    return 0;
+}
+
 int rt_bvh_build(rt_bvh *bvh, rt_prim *prims, int n)
 {
     memset(bvh, 0, sizeof *bvh);
@@ -248,24 +297,9 @@ int rt_bvh_build(rt_bvh *bvh, rt_prim *prims, int n)
         if (bvh->nodes[i].count > 0)
             pack_leaf(bvh, &bvh->nodes[i], prims);
     const rt_bvh_node *root = &bvh->nodes[0];
-    if (root->count > 0 && root->n_quads > 0) {
-        /* 448 bytes a quad: a multiple of 64, so every row is aligned. */
-        bvh->root_quads = aligned_alloc(64, (size_t)root->n_quads * sizeof *bvh->root_quads);
-        if (!bvh->root_quads) {
-            rt_bvh_destroy(bvh);
-            return -1;
-        }
-        for (int q = 0; q < root->n_quads; q++) {
-            const rt_quad_packet *pk = &bvh->packets[root->packet + q / RT_PACKET];
-            int j = q % RT_PACKET;
-            const double *fields[13] = {pk->nx, pk->ny, pk->nz, pk->plane, pk->qx, pk->qy, pk->qz,
-                                        pk->ax, pk->ay, pk->az, pk->bx, pk->by, pk->bz};
-            for (int k = 0; k < RT_BVH_LANES; k++) {
-                for (int f = 0; f < 13; f++)
-                    bvh->root_quads[q].f[f][k] = fields[f][j];
-                bvh->root_quads[q].prim[k] = pk->prim[j];
-            }
-        }
+    if (root->count > 0 && root->n_quads > 0 && lay_out_root(bvh, root) != 0) {
+        rt_bvh_destroy(bvh);
+        return -1;
     }
     return 0;
 }
@@ -274,6 +308,7 @@ void rt_bvh_destroy(rt_bvh *bvh)
 {
     free(bvh->nodes);
     free(bvh->packets);
+    free(bvh->root_axis);
     free(bvh->root_quads);
     memset(bvh, 0, sizeof *bvh);
 }
@@ -579,7 +614,33 @@ __attribute__((target("avx2"))) static unsigned hit4_leaf_avx2(const rt_bvh *bvh
     __m256d best = _mm256_set1_pd(tmax);
     __m256d best_i = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
     const rt_bvh_node *nd = &bvh->nodes[0];
-    for (int q = 0; q < nd->n_quads; q++) {
+    const __m256d O[3] = {ox, oy, oz}, D[3] = {dx, dy, dz};
+    for (int q = 0; q < bvh->n_root_axis; q++) {
+        /* rt_quad_t with the zero terms of its dot products left out:
+         * adding a signed zero changes a nonzero sum not at all, and a zero
+         * sum at most in sign, which no test below sees (a zero dn gives
+         * t = +-inf or NaN either way, rejected; -0 passes >= 0 as +0
+         * does). Products with the zero coordinates could only be NaN for
+         * an infinite t, also rejected. */
+        const rt_quad_axis *w = &bvh->root_axis[q];
+        __m256d n = _mm256_load_pd(w->n);
+        __m256d t = _mm256_div_pd(_mm256_sub_pd(_mm256_load_pd(w->plane), _mm256_mul_pd(n, O[w->k])),
+                                  _mm256_mul_pd(n, D[w->k]));
+        __m256d a = _mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(O[w->i], _mm256_mul_pd(t, D[w->i])),
+                                                _mm256_load_pd(w->qi)),
+                                  _mm256_load_pd(w->ea));
+        __m256d b = _mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(O[w->j], _mm256_mul_pd(t, D[w->j])),
+                                                _mm256_load_pd(w->qj)),
+                                  _mm256_load_pd(w->eb));
+        __m256d ok = _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ), _mm256_cmp_pd(t, best, _CMP_LT_OQ));
+        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ),
+                                              _mm256_cmp_pd(a, one, _CMP_LE_OQ)));
+        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
+                                              _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
+        best = _mm256_blendv_pd(best, t, ok);
+        best_i = _mm256_blendv_pd(best_i, _mm256_load_pd((const double *)(const void *)w->prim), ok);
+    }
+    for (int q = 0; q < bvh->n_root_quads; q++) {
         const rt_quad_lanes *w = &bvh->root_quads[q];
         __m256d nx = _mm256_load_pd(w->f[0]), ny = _mm256_load_pd(w->f[1]), nz = _mm256_load_pd(w->f[2]);
         __m256d dn = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)),

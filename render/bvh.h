@@ -65,13 +65,32 @@ typedef struct rt_quad_lanes {
     int64_t prim[RT_BVH_LANES];
 } rt_quad_lanes;
 
+/* An axis-aligned quad (the walls of a room, the light, the top of a
+ * box): its normal and both dual edge vectors (rt_quad's ea, eb) have one
+ * nonzero coordinate each, along axes k, i and j. rt_quad_t's dot
+ * products with them then reduce exactly to one product (the other terms
+ * are signed zeros), so rt_bvh_hit4 tests it with a quarter of the
+ * arithmetic and the same result. Fields repeated RT_BVH_LANES times. */
+typedef struct rt_quad_axis {
+    double n[RT_BVH_LANES], plane[RT_BVH_LANES], qi[RT_BVH_LANES], qj[RT_BVH_LANES];
+    double ea[RT_BVH_LANES], eb[RT_BVH_LANES];
+    int64_t prim[RT_BVH_LANES];
+    int32_t k, i, j, unused;
+    double pad[2]; /* to 256 bytes, with the rows at multiples of 32 */
+} rt_quad_axis;
+
 typedef struct rt_bvh {
     rt_bvh_node *nodes; /* nodes[0] is the root */
     int n_nodes;
     int depth;          /* levels below the root, < RT_BVH_MAX_DEPTH (checked by rt_bvh_build) */
     rt_quad_packet *packets;
     int n_packets;
-    rt_quad_lanes *root_quads; /* the root's quads when the root is a leaf, else NULL */
+    /* The root's quads when the root is a leaf (else none), for
+     * rt_bvh_hit4: the axis-aligned ones, then the others. */
+    rt_quad_axis *root_axis;
+    int n_root_axis;
+    rt_quad_lanes *root_quads;
+    int n_root_quads;
 } rt_bvh;
 
 /* Builds the hierarchy over prims[0..n) (n >= 1), reordering the array so

@@ -165,6 +165,24 @@ static void check_bvh(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t 
  * same distance bit for bit, and the same record when the primitive is
  * the same (on an exact tie another primitive at the same distance may
  * win). */
+/* A ray whose direction has zero coordinates (along an axis or in an
+ * axis plane), from a point with a coordinate snapped to lo or hi (on a
+ * wall of the book's room): the cases where the dot products of a quad
+ * test meet zeros and infinities. */
+static rt_ray axis_ray(mc_rng *rng, vec3 lo, vec3 hi)
+{
+    rt_ray r = random_ray(rng, lo, hi);
+    double c[3] = {r.dir.x, r.dir.y, r.dir.z}, o[3] = {r.origin.x, r.origin.y, r.origin.z};
+    int zeros = 1 + (int)mc_rng_bounded(rng, 2u); /* one or two coordinates */
+    for (int z = 0; z < zeros; z++)
+        c[mc_rng_bounded(rng, 3u)] = 0.0;
+    if (c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0)
+        c[1] = -1.0;
+    int a = (int)mc_rng_bounded(rng, 3u);
+    o[a] = mc_rng_uniform(rng) < 0.5 ? vec3_at(lo, a) : vec3_at(hi, a);
+    return rt_ray_make(v3(o[0], o[1], o[2]), vec3_normalize(v3(c[0], c[1], c[2])));
+}
+
 static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed)
 {
     mc_rng rng = mc_rng_derive(seed, 0u);
@@ -175,7 +193,7 @@ static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64
         rt_ray r[RT_BVH_LANES];
         rt_hit h4[RT_BVH_LANES];
         for (int k = 0; k < RT_BVH_LANES; k++)
-            r[k] = random_ray(&rng, lo, hi);
+            r[k] = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
         unsigned mask = rt_bvh_hit4(b, prims, r, 1e-3, HUGE_VAL, h4);
         for (int k = 0; k < RT_BVH_LANES; k++) {
             rt_hit h1;
@@ -203,9 +221,10 @@ static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64
 }
 
 /* The book scene (a root leaf: the four-lane vector test where AVX2 is
- * there) with 2.5 x 10^5 batches of rays from all around and inside it,
- * and the soup of test_bvh_matches_brute_force's kind (a deep tree: ray
- * by ray). */
+ * there, with its axis-aligned quads on their own path) with 2.5 x 10^5
+ * batches of rays from all around and inside it and 5 x 10^4 from its
+ * walls, one batch in eight along axes or axis planes; then the soup of
+ * test_bvh_matches_brute_force's kind (a deep tree: ray by ray). */
 static void test_bvh_hit4_matches_hit(void **state)
 {
     (void)state;
@@ -213,6 +232,9 @@ static void test_bvh_hit4_matches_hit(void **state)
     rt_scene *s = rt_scene_named("book", &cp);
     int hits = check_hit4(s, 250000, v3(-100, -100, -900), v3(655, 655, 655), 16u);
     assert_true(hits > 250000);
+    /* Rays from the room's walls (coordinates 0 and 555 exactly). */
+    hits = check_hit4(s, 50000, v3(0, 0, 0), v3(555, 555, 555), 19u);
+    assert_true(hits > 100000);
     rt_scene_destroy(s);
     mc_rng rng = mc_rng_derive(17u, 0u);
     s = rt_scene_create();
@@ -227,7 +249,7 @@ static void test_bvh_hit4_matches_hit(void **state)
     assert_int_equal(rt_scene_build(s), 0);
     assert_true(rt_scene_bvh(s)->nodes[0].count == 0); /* not a leaf: the other path */
     hits = check_hit4(s, 20000, v3(-20, -20, -20), v3(120, 120, 120), 18u);
-    printf("rt_bvh_hit4 = rt_bvh_hit on 10^6 + 8 x 10^4 rays (%d hits in the soup)\n", hits);
+    printf("rt_bvh_hit4 = rt_bvh_hit on 1.2 x 10^6 + 8 x 10^4 rays (%d hits in the soup)\n", hits);
     assert_true(hits > 8000);
     rt_scene_destroy(s);
 }
