@@ -380,47 +380,60 @@ static inline void packets_closest(const rt_quad_packet *pk, int n_packets, rt_r
 #define RT_BVH_AVX2 1
 #include <immintrin.h>
 
-/* packets_closest written with AVX2 intrinsics: the same expressions in
- * the same order on the four lanes (no FMA: a fused multiply-add rounds
- * once where rt_quad_t rounds twice), so the same distances bit for bit.
- * Two things the compiler does not do by itself from the loop above:
- * the lanes start at the leaf's tmax, so "t < tmax" and "closer than this
- * lane's best" are one comparison; and the nearest lane is found by a
- * vector minimum, a mask of the lanes equal to it and the lowest set bit,
- * without a store, a reload or a data-dependent branch (a tie goes to the
+/* rt_quad_t on four lanes: q[f] points to the four lanes of the quad's
+ * field f, in rt_quad_packet order (normal, plane, corner, ea, eb); o and
+ * d are the ray's origin and direction; each lane its own quad or ray.
+ * The same expressions in the same order (no FMA: a fused multiply-add
+ * rounds once where rt_quad_t rounds twice), so the same distances bit
+ * for bit. Returns t; *ok gets the lanes with t in (lo, hi) and the hit
+ * inside the quad. Ordered comparisons: a NaN (an unused lane's 0/0, a
+ * ray in the plane) fails every one. The fields are loaded where they are
+ * used, so that they stay memory operands instead of thirteen registers. */
+__attribute__((target("avx2"), always_inline)) static inline __m256d
+quad_t4(const double *const q[13], const __m256d o[3], const __m256d d[3], __m256d lo, __m256d hi,
+        __m256d *ok)
+{
+#define F(k) _mm256_loadu_pd(q[k])
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    __m256d dn = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(F(0), d[0]), _mm256_mul_pd(F(1), d[1])),
+                               _mm256_mul_pd(F(2), d[2]));
+    __m256d on = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(F(0), o[0]), _mm256_mul_pd(F(1), o[1])),
+                               _mm256_mul_pd(F(2), o[2]));
+    __m256d t = _mm256_div_pd(_mm256_sub_pd(F(3), on), dn);
+    __m256d hx = _mm256_sub_pd(_mm256_add_pd(o[0], _mm256_mul_pd(t, d[0])), F(4));
+    __m256d hy = _mm256_sub_pd(_mm256_add_pd(o[1], _mm256_mul_pd(t, d[1])), F(5));
+    __m256d hz = _mm256_sub_pd(_mm256_add_pd(o[2], _mm256_mul_pd(t, d[2])), F(6));
+    __m256d a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, F(7)), _mm256_mul_pd(hy, F(8))),
+                              _mm256_mul_pd(hz, F(9)));
+    __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, F(10)), _mm256_mul_pd(hy, F(11))),
+                              _mm256_mul_pd(hz, F(12)));
+#undef F
+    __m256d in = _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ), _mm256_cmp_pd(t, hi, _CMP_LT_OQ));
+    in = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ), _mm256_cmp_pd(a, one, _CMP_LE_OQ)));
+    *ok = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ), _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
+    return t;
+}
+
+/* packets_closest written with AVX2 intrinsics (quad_t4, one quad per
+ * lane). Two things the compiler does not do by itself from the loop
+ * above: the lanes start at the leaf's tmax, so "t < tmax" and "closer
+ * than this lane's best" are one comparison; and the nearest lane is
+ * found by a vector minimum, a mask of the lanes equal to it and the
+ * lowest set bit, without a data-dependent branch (a tie goes to the
  * lower lane, then to the earlier packet, as above). */
 __attribute__((target("avx2"))) static inline void packets_closest_avx2(
     const rt_quad_packet *pk, int n_packets, rt_ray r, double tmin, double *best, int *best_i)
 {
-    const __m256d ox = _mm256_set1_pd(r.origin.x), oy = _mm256_set1_pd(r.origin.y),
-                  oz = _mm256_set1_pd(r.origin.z), dx = _mm256_set1_pd(r.dir.x),
-                  dy = _mm256_set1_pd(r.dir.y), dz = _mm256_set1_pd(r.dir.z),
-                  lo = _mm256_set1_pd(tmin), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    const __m256d o[3] = {_mm256_set1_pd(r.origin.x), _mm256_set1_pd(r.origin.y),
+                          _mm256_set1_pd(r.origin.z)},
+                  d[3] = {_mm256_set1_pd(r.dir.x), _mm256_set1_pd(r.dir.y), _mm256_set1_pd(r.dir.z)},
+                  lo = _mm256_set1_pd(tmin);
     __m256d m = _mm256_set1_pd(*best);
     __m256i mi = _mm256_set1_epi64x(-1);
     for (int p = 0; p < n_packets; p++, pk++) {
-        __m256d nx = _mm256_loadu_pd(pk->nx), ny = _mm256_loadu_pd(pk->ny), nz = _mm256_loadu_pd(pk->nz);
-        __m256d dn = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)),
-                                   _mm256_mul_pd(nz, dz));
-        __m256d on = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, ox), _mm256_mul_pd(ny, oy)),
-                                   _mm256_mul_pd(nz, oz));
-        __m256d t = _mm256_div_pd(_mm256_sub_pd(_mm256_loadu_pd(pk->plane), on), dn);
-        __m256d hx = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), _mm256_loadu_pd(pk->qx));
-        __m256d hy = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), _mm256_loadu_pd(pk->qy));
-        __m256d hz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), _mm256_loadu_pd(pk->qz));
-        __m256d a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_loadu_pd(pk->ax)),
-                                                _mm256_mul_pd(hy, _mm256_loadu_pd(pk->ay))),
-                                  _mm256_mul_pd(hz, _mm256_loadu_pd(pk->az)));
-        __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_loadu_pd(pk->bx)),
-                                                _mm256_mul_pd(hy, _mm256_loadu_pd(pk->by))),
-                                  _mm256_mul_pd(hz, _mm256_loadu_pd(pk->bz)));
-        /* Ordered comparisons: a NaN (an unused lane's 0/0, a ray in the
-         * plane) fails every one. */
-        __m256d ok = _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ), _mm256_cmp_pd(t, m, _CMP_LT_OQ));
-        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ),
-                                              _mm256_cmp_pd(a, one, _CMP_LE_OQ)));
-        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
-                                              _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
+        const double *const fields[13] = {pk->nx, pk->ny, pk->nz, pk->plane, pk->qx, pk->qy, pk->qz,
+                                          pk->ax, pk->ay, pk->az, pk->bx, pk->by, pk->bz};
+        __m256d ok, t = quad_t4(fields, o, d, lo, m, &ok);
         m = _mm256_blendv_pd(m, t, ok);
         mi = _mm256_castpd_si256(_mm256_blendv_pd(
             _mm256_castsi256_pd(mi), _mm256_loadu_pd((const double *)(const void *)pk->prim), ok));
@@ -593,11 +606,12 @@ bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double
 }
 
 #ifdef RT_BVH_AVX2
-/* The leaf at the root against four rays, one per lane: every quad of
- * every packet and then every sphere, broadcast to the four lanes. The
- * arithmetic is rt_quad_t's and rt_sphere_t's, expression by expression
- * (no FMA), so every lane's distance is the scalar one bit for bit; each
- * lane keeps its nearest hit so far by blends, strictly nearer wins. */
+/* The leaf at the root against four rays, one per lane: the axis-aligned
+ * quads (rt_quad_axis), the other quads (quad_t4), then every sphere, each
+ * primitive's fields the same in all four lanes. The arithmetic is
+ * rt_quad_t's and rt_sphere_t's, expression by expression (no FMA), so
+ * every lane's distance is the scalar one bit for bit; each lane keeps its
+ * nearest hit so far by blends, strictly nearer wins. */
 __attribute__((target("avx2"))) static unsigned hit4_leaf_avx2(const rt_bvh *bvh,
                                                                 const rt_prim *prims,
                                                                 const rt_ray r[RT_BVH_LANES],
@@ -642,26 +656,10 @@ __attribute__((target("avx2"))) static unsigned hit4_leaf_avx2(const rt_bvh *bvh
     }
     for (int q = 0; q < bvh->n_root_quads; q++) {
         const rt_quad_lanes *w = &bvh->root_quads[q];
-        __m256d nx = _mm256_load_pd(w->f[0]), ny = _mm256_load_pd(w->f[1]), nz = _mm256_load_pd(w->f[2]);
-        __m256d dn = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)),
-                                   _mm256_mul_pd(nz, dz));
-        __m256d on = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, ox), _mm256_mul_pd(ny, oy)),
-                                   _mm256_mul_pd(nz, oz));
-        __m256d t = _mm256_div_pd(_mm256_sub_pd(_mm256_load_pd(w->f[3]), on), dn);
-        __m256d hx = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), _mm256_load_pd(w->f[4]));
-        __m256d hy = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), _mm256_load_pd(w->f[5]));
-        __m256d hz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), _mm256_load_pd(w->f[6]));
-        __m256d a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_load_pd(w->f[7])),
-                                                _mm256_mul_pd(hy, _mm256_load_pd(w->f[8]))),
-                                  _mm256_mul_pd(hz, _mm256_load_pd(w->f[9])));
-        __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(hx, _mm256_load_pd(w->f[10])),
-                                                _mm256_mul_pd(hy, _mm256_load_pd(w->f[11]))),
-                                  _mm256_mul_pd(hz, _mm256_load_pd(w->f[12])));
-        __m256d ok = _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ), _mm256_cmp_pd(t, best, _CMP_LT_OQ));
-        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ),
-                                              _mm256_cmp_pd(a, one, _CMP_LE_OQ)));
-        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
-                                              _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
+        const double *const fields[13] = {w->f[0], w->f[1], w->f[2],  w->f[3],  w->f[4],
+                                          w->f[5], w->f[6], w->f[7],  w->f[8],  w->f[9],
+                                          w->f[10], w->f[11], w->f[12]};
+        __m256d ok, t = quad_t4(fields, O, D, lo, best, &ok);
         best = _mm256_blendv_pd(best, t, ok);
         best_i = _mm256_blendv_pd(best_i, _mm256_load_pd((const double *)(const void *)w->prim), ok);
     }

@@ -9,9 +9,12 @@
  * one flat array in depth-first order (a node's first child follows it);
  * traversal is iterative, with an explicit stack, nearer child first.
  * Inside a leaf the quads are stored again four at a time, coordinate by
- * coordinate ("packets"), and tested together without a branch: a loop
- * the compiler turns into vector instructions. Spheres are tested one by
- * one.
+ * coordinate ("packets"), and tested together without a branch (AVX2
+ * vectors where the processor has them). Spheres are tested one by one.
+ * A small scene's tree is a single leaf (the Cornell box: twelve quads and
+ * a sphere); for it rt_bvh_hit4 turns the loops around and tests each
+ * primitive against four rays at once, so that the four tests are
+ * independent instead of one ray's long chain.
  * Serves the renderer of chapters 4-10 of "Ray Tracing: The Rest of Your
  * Life"; the book itself uses the BVH of its second volume.
  */

@@ -18,6 +18,12 @@
  *   a complete picture in which each pixel's mean is unbiased: the rows
  *   finished in the interrupted pass have one pass more samples than the
  *   others, and the caller reports the total sample count actually taken.
+ * - The book's integrator (strategies uniform, cosine, mixture) advances
+ *   four paths together, one pixel per lane, tracing their segments with
+ *   one rt_scene_hit4 and evaluating their light densities with
+ *   render/lights4.h; each pixel still consumes its own stream in the same
+ *   order, so the image is the one of one path at a time, bit for bit
+ *   (rt_render_job.one_path_at_a_time keeps that reference).
  * Library code never prints; progress goes to a caller's callback.
  */
 #ifndef RT_RENDER_H
