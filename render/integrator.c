@@ -111,14 +111,6 @@ static vec3 mixture_draw(const rt_path_settings *ps, const rt_scatter *sr, const
                                                     : material_generate(ps, sr, rng);
 }
 
-/* mixture_draw with the lights prepared in lane k of at4. */
-static vec3 mixture_draw4(const rt_path_settings *ps, const rt_scatter *sr, const rt_lights4 *at4,
-                          int k, mc_rng *rng)
-{
-    return mc_rng_uniform(rng) < mixture_weights[0] ? rt_lights4_generate(at4, k, rng)
-                                                    : material_generate(ps, sr, rng);
-}
-
 /* The fast mixture's density at dir given the light list's density there
  * (with the negative-control scale), summed in pdf_mixture's order. */
 static double mixture_density(const rt_path_settings *ps, const rt_scatter *sr, vec3 dir,
@@ -256,7 +248,9 @@ bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps)
 vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const rt_lights4 *at4,
                   int k, mc_rng *rng)
 {
-    return mixture_draw4(ps, &v->sr, at4, k, rng);
+    /* mixture_draw with the lights prepared in lane k of at4. */
+    return mc_rng_uniform(rng) < mixture_weights[0] ? rt_lights4_generate(at4, k, rng)
+                                                    : material_generate(ps, &v->sr, rng);
 }
 
 void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
@@ -296,9 +290,9 @@ static vec3 arriving(const rt_scene *s, rt_ray r, uint64_t *segments)
 /* The power heuristic a^2 / (a^2 + b^2) for the strategy with density a,
  * written as 1 / (1 + (b/a)^2) so that an infinite a (the cone pdf of a
  * sphere light so small that R^2 / d^2 underflows, R / d < ~1e-154) gives
- * 1 instead of inf/inf = NaN, and a
- * huge ratio overflows to weight 0 rather than to NaN. a == 0: that strategy
- * could not have drawn the direction, so it gets nothing. */
+ * 1 instead of inf/inf = NaN, and a huge ratio overflows to weight 0
+ * rather than to NaN. a == 0: that strategy could not have drawn the
+ * direction, so it gets nothing. */
 static double power_weight(double a, double b)
 {
     if (!(a > 0.0))
