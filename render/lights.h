@@ -102,8 +102,6 @@ static inline void rt_lights_prepare(rt_lights_at *at, const rt_light *lights, i
     }
 }
 
-/* rt_lights_generate from the prepared origin: the same direction from
- * the same uniforms. */
 /* The direction toward light l drawn from the uniforms u1, u2: a point of
  * the quad, or a direction of the sphere's cone (axis and 1 - cos
  * theta_max as prepared from origin). */
@@ -118,6 +116,8 @@ static inline vec3 rt_light_generate(const rt_light *l, vec3 origin, vec3 axis,
     return onb_to_world(&frame, smp_uniform_cap_sample(u1, u2, one_minus_cos));
 }
 
+/* rt_lights_generate from the prepared origin: the same direction from
+ * the same uniforms. */
 static inline vec3 rt_lights_at_generate(const rt_lights_at *at, mc_rng *rng)
 {
     uint32_t i = mc_rng_bounded(rng, (uint32_t)at->n);
