@@ -43,7 +43,11 @@ bool rt_pixel_add(rt_pixel *p, vec3 radiance)
         p->dropped++;
         return false;
     }
-    /* Welford's update per channel: exact mean, stable variance. */
+    /* Welford's update per channel: exact mean, stable variance. It is
+     * mc_welford_add's update for three channels sharing one count, with
+     * one division per sample (1 / n) instead of three; that rounds the
+     * mean differently in the last bit, so the two are kept apart rather
+     * than changing either's numbers. */
     double x[3] = {radiance.x, radiance.y, radiance.z};
     p->n++;
     double inv_n = 1.0 / (double)p->n;
