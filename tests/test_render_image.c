@@ -27,6 +27,18 @@ static unsigned char *slurp(FILE *f, long *len)
     return buf;
 }
 
+/* The bytes of img written in format fmt with gamma 2 (malloc'ed, *len
+ * bytes). */
+static unsigned char *written(const rt_image *img, rt_format fmt, long *len)
+{
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    assert_int_equal(rt_image_write(img, f, fmt, RT_GAMMA_2), 0);
+    unsigned char *bytes = slurp(f, len);
+    fclose(f);
+    return bytes;
+}
+
 static unsigned char *render_pfm(const rt_scene *s, rt_camera_params cp, int threads, long *len)
 {
     rt_image *img = rt_image_create(24, 24);
@@ -35,11 +47,7 @@ static unsigned char *render_pfm(const rt_scene *s, rt_camera_params cp, int thr
     job.threads = threads;
     job.seed = 7;
     assert_int_equal(rt_render(&job, img, NULL), 0);
-    FILE *f = tmpfile();
-    assert_non_null(f);
-    assert_int_equal(rt_image_write(img, f, RT_FORMAT_PFM, RT_GAMMA_2), 0);
-    unsigned char *bytes = slurp(f, len);
-    fclose(f);
+    unsigned char *bytes = written(img, RT_FORMAT_PFM, len);
     rt_image_destroy(img);
     return bytes;
 }
@@ -235,11 +243,8 @@ static void test_write_pfm(void **state)
 {
     (void)state;
     rt_image *img = known_image();
-    FILE *f = tmpfile();
-    assert_int_equal(rt_image_write(img, f, RT_FORMAT_PFM, RT_GAMMA_2), 0);
     long len;
-    unsigned char *b = slurp(f, &len);
-    fclose(f);
+    unsigned char *b = written(img, RT_FORMAT_PFM, &len);
     static const char header[] = "PF\n3 2\n-1.0\n";
     size_t h = strlen(header);
     assert_int_equal(len, (long)(h + 6 * 3 * sizeof(float)));
@@ -262,11 +267,8 @@ static void test_write_ppm(void **state)
 {
     (void)state;
     rt_image *img = known_image();
-    FILE *f = tmpfile();
-    assert_int_equal(rt_image_write(img, f, RT_FORMAT_PPM, RT_GAMMA_2), 0);
     long len;
-    unsigned char *b = slurp(f, &len);
-    fclose(f);
+    unsigned char *b = written(img, RT_FORMAT_PPM, &len);
     static const char header[] = "P6\n3 2\n255\n";
     size_t h = strlen(header);
     assert_int_equal(len, (long)(h + 18));
