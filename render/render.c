@@ -78,7 +78,10 @@ static double in_cell(uint64_t i, uint64_t n, double u)
 /* The camera ray of sample k of pixel (x, y): a point of its cell c while
  * k < m (c then moves on by the stride), a uniform point after. The two
  * uniforms come first from the pixel's stream. */
-static rt_ray sample_ray(const rt_render_job *job, const jitter *jt, int x, int y, uint64_t k,
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline rt_ray sample_ray(const rt_render_job *job, const jitter *jt, int x, int y, uint64_t k,
                          uint64_t *c, mc_rng *rng)
 {
     double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng), jx = u1, jy = u2;
@@ -133,40 +136,34 @@ static void lane_take(lane *l, const rt_render_job *job, const jitter *jt, mc_rn
     l->path = rt_path_begin(&job->path, sample_ray(job, jt, x, y, k0, &l->c, &l->rng));
 }
 
-/* The second half of the step of the lanes at a diffuse vertex: for the
- * fast mixture, the light densities of the four vertices are prepared and
- * evaluated together (render/lights4.h), lanes without a vertex standing
- * in with a copy of one that has. */
+/* The second half of the step of the lanes in `diffuse` (a bit per lane),
+ * each at a diffuse vertex. For the fast mixture the light densities of
+ * all four lanes are prepared and evaluated together (render/lights4.h);
+ * a lane without a vertex this step goes through with the vertex and
+ * direction it had last (or the initial ones), which are finite and whose
+ * densities nobody reads: lanes never mix. */
 static void turn_diffuse(const rt_render_job *job, lane *lanes, const rt_path_vertex *verts,
-                         const bool *diffuse)
+                         vec3 *dirs, unsigned diffuse)
 {
     const rt_scene *s = job->scene;
-    int any = -1;
-    for (int i = 0; i < RT_BVH_LANES; i++)
-        if (diffuse[i])
-            any = i;
-    if (any < 0)
-        return;
     if (!rt_path_batches_lights(s, &job->path)) {
         for (int i = 0; i < RT_BVH_LANES; i++)
-            if (diffuse[i])
+            if ((diffuse >> i) & 1u)
                 rt_path_continue(s, &job->path, &lanes[i].path, &verts[i], &lanes[i].rng);
         return;
     }
-    vec3 at_p[RT_LIGHTS4_LANES], dirs[RT_LIGHTS4_LANES];
+    vec3 at_p[RT_LIGHTS4_LANES];
     for (int i = 0; i < RT_BVH_LANES; i++)
-        at_p[i] = verts[diffuse[i] ? i : any].p;
+        at_p[i] = verts[i].p;
     rt_lights4 at4;
     rt_lights4_prepare(&at4, rt_scene_lights(s), rt_scene_light_count(s), at_p);
     for (int i = 0; i < RT_BVH_LANES; i++)
-        if (diffuse[i])
+        if ((diffuse >> i) & 1u)
             dirs[i] = rt_path_draw(&job->path, &verts[i], &at4, i, &lanes[i].rng);
-    for (int i = 0; i < RT_BVH_LANES; i++)
-        dirs[i] = dirs[diffuse[i] ? i : any];
     double values[RT_LIGHTS4_LANES];
     rt_lights4_value(&at4, dirs, values);
     for (int i = 0; i < RT_BVH_LANES; i++)
-        if (diffuse[i])
+        if ((diffuse >> i) & 1u)
             rt_path_finish(&job->path, &lanes[i].path, &verts[i], dirs[i], values[i], &lanes[i].rng);
 }
 
@@ -175,50 +172,43 @@ static void turn_diffuse(const rt_render_job *job, lane *lanes, const rt_path_ve
  * exactly as render_row does (the same stream, the same order, so the
  * same numbers), and the lanes' rays are traced together by one
  * rt_scene_hit4 per segment. A lane whose pixel is done takes the next
- * pixel of the row. */
+ * pixel of the row; at the end of the row, a lane with no pixel left
+ * traces its last ray again and its results are ignored. */
 static void render_row4(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
                         int y, uint64_t k0, uint64_t k1, uint64_t c0, uint64_t *segments,
                         uint64_t *dropped)
 {
-    int w = img->width, next = 0, active = 0;
+    int w = img->width, next = 0;
+    unsigned live = 0; /* the lanes with a pixel: each has a path under way */
+    uint64_t seg = 0, drop = 0;
     lane lanes[RT_BVH_LANES];
+    rt_path_vertex verts[RT_BVH_LANES] = {0};
+    vec3 dirs[RT_BVH_LANES];
     for (int i = 0; i < RT_BVH_LANES; i++) {
+        dirs[i] = vec3_make(0.0, 0.0, 1.0);
         lane_take(&lanes[i], job, jt, streams, y, next, w, k0, c0);
         next += next < w;
-        active += lanes[i].x >= 0;
+        live |= (unsigned)(lanes[i].x >= 0) << i;
     }
-    while (active > 0) {
-        rt_ray rays[RT_BVH_LANES];
-        rt_hit hits[RT_BVH_LANES];
-        int any = 0;
-        for (int i = 0; i < RT_BVH_LANES; i++)
-            if (lanes[i].x >= 0 && !lanes[i].path.done)
-                any = i;
-        /* Idle lanes and finished paths trace a copy of a live ray. */
-        for (int i = 0; i < RT_BVH_LANES; i++)
-            rays[i] = lanes[i].x >= 0 && !lanes[i].path.done ? lanes[i].path.ray : lanes[any].path.ray;
-        unsigned hit = rt_scene_hit4(job->scene, rays, HUGE_VAL, hits);
-        rt_path_vertex verts[RT_BVH_LANES];
-        bool diffuse[RT_BVH_LANES] = {false};
+    /* Lanes without a pixel from the start (a row narrower than the
+     * lanes) trace lane 0's ray; lane_take leaves an idle lane's path as
+     * it was, so lanes that run out later trace their last ray. */
+    for (int i = 1; i < RT_BVH_LANES; i++)
+        if (lanes[i].x < 0)
+            lanes[i].path = lanes[0].path;
+    /* A lane whose first path is done at once (max depth 0) is settled
+     * below before anything is traced. */
+    unsigned settle = live;
+    while (live) {
         for (int i = 0; i < RT_BVH_LANES; i++) {
             lane *l = &lanes[i];
-            if (l->x >= 0 && !l->path.done) {
-                ++*segments;
-                diffuse[i] = rt_path_scatter(job->scene, &job->path, &l->path,
-                                             (hit >> i) & 1u ? &hits[i] : NULL, &l->rng, &verts[i]);
-            }
-        }
-        turn_diffuse(job, lanes, verts, diffuse);
-        for (int i = 0; i < RT_BVH_LANES; i++) {
-            lane *l = &lanes[i];
-            if (l->x < 0)
+            if (!((settle >> i) & 1u))
                 continue;
             /* Finished samples go to the pixel; a sample of depth 0 is
              * finished as soon as it begins. */
-            while (l->x >= 0 && l->path.done) {
+            while (l->path.done) {
                 size_t idx = (size_t)y * (size_t)w + (size_t)l->x;
-                if (!rt_pixel_add(&img->px[idx], l->path.L))
-                    ++*dropped;
+                drop += !rt_pixel_add(&img->px[idx], l->path.L);
                 if (++l->k < k1) {
                     l->path = rt_path_begin(&job->path, sample_ray(job, jt, l->x, y, l->k, &l->c, &l->rng));
                     continue;
@@ -226,10 +216,39 @@ static void render_row4(const rt_render_job *job, rt_image *img, mc_rng *streams
                 streams[idx] = l->rng;
                 lane_take(l, job, jt, streams, y, next, w, k0, c0);
                 next += next < w;
-                active -= l->x < 0;
+                if (l->x < 0) {
+                    live &= ~(1u << i);
+                    break;
+                }
             }
         }
+        if (!live)
+            break;
+        rt_ray rays[RT_BVH_LANES];
+        rt_hit hits[RT_BVH_LANES];
+        for (int i = 0; i < RT_BVH_LANES; i++)
+            rays[i] = lanes[i].path.ray;
+        unsigned hit = rt_scene_hit4(job->scene, rays, HUGE_VAL, hits);
+        unsigned diffuse = 0;
+        settle = 0;
+        for (int i = 0; i < RT_BVH_LANES; i++) {
+            if (!((live >> i) & 1u))
+                continue;
+            lane *l = &lanes[i];
+            seg++;
+            diffuse |= (unsigned)rt_path_scatter(job->scene, &job->path, &l->path,
+                                                 (hit >> i) & 1u ? &hits[i] : NULL, &l->rng,
+                                                 &verts[i])
+                       << i;
+        }
+        if (diffuse)
+            turn_diffuse(job, lanes, verts, dirs, diffuse);
+        for (int i = 0; i < RT_BVH_LANES; i++)
+            settle |= (unsigned)lanes[i].path.done << i;
+        settle &= live;
     }
+    *segments += seg;
+    *dropped += drop;
 }
 
 typedef struct totals {
