@@ -22,10 +22,24 @@ rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera)
 }
 
 /* The pixel's stratification: mc_strat_grid's sx x sy cells for spp
- * samples, visited as cell (k stride) mod m for sample k < m. */
+ * samples, visited as cell (k stride) mod m for sample k < m; cell c is
+ * column c mod sx of row c / sx. */
 typedef struct jitter {
     uint64_t sx, sy, m, stride;
+    uint64_t stride_i, stride_j; /* the stride's column and row */
 } jitter;
+
+/* A cell as its column i and row j, so that moving on by the stride
+ * needs no division. */
+typedef struct cell {
+    uint64_t i, j;
+} cell;
+
+static cell cell_of(const jitter *jt, uint64_t c)
+{
+    cell r = {c % jt->sx, c / jt->sx};
+    return r;
+}
 
 static uint64_t gcd(uint64_t a, uint64_t b)
 {
@@ -54,7 +68,7 @@ static jitter jitter_make(uint64_t spp)
 {
     size_t sx, sy;
     mc_strat_grid((size_t)spp, &sx, &sy);
-    jitter j = {sx, sy, (uint64_t)sx * sy, 1};
+    jitter j = {sx, sy, (uint64_t)sx * sy, 1, 0, 0};
     /* A stride near m / golden ratio coprime to m is a permutation of the
      * cells whose prefixes spread over the pixel (the Fibonacci lattice
      * idea); coprimality makes it visit every cell exactly once. */
@@ -65,6 +79,8 @@ static jitter jitter_make(uint64_t spp)
     /* The loop stops by m - 1 (always coprime to m), so 1 <= s < m; for a
      * single cell s = 1, which also leaves the cell at 0. */
     j.stride = s;
+    j.stride_i = s % j.sx;
+    j.stride_j = s / j.sx;
     return j;
 }
 
@@ -82,20 +98,26 @@ static double in_cell(uint64_t i, uint64_t n, double u)
 __attribute__((always_inline))
 #endif
 static inline rt_ray sample_ray(const rt_render_job *job, const jitter *jt, int x, int y, uint64_t k,
-                         uint64_t *c, mc_rng *rng)
+                                cell *c, mc_rng *rng)
 {
     double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng), jx = u1, jy = u2;
     if (k < jt->m) {
-        jx = in_cell(*c % jt->sx, jt->sx, u1);
-        jy = in_cell(*c / jt->sx, jt->sy, u2);
-        *c = *c + jt->stride >= jt->m ? *c + jt->stride - jt->m : *c + jt->stride;
+        jx = in_cell(c->i, jt->sx, u1);
+        jy = in_cell(c->j, jt->sy, u2);
+        /* c + stride, then minus m if that reaches m: the column carries
+         * into the row, and the row (below 2 sy, since c and the stride
+         * are below m) wraps at most once. */
+        uint64_t i = c->i + jt->stride_i, carry = i >= jt->sx;
+        uint64_t j = c->j + jt->stride_j + carry;
+        c->i = carry ? i - jt->sx : i;
+        c->j = j >= jt->sy ? j - jt->sy : j;
     }
     return rt_camera_ray(&job->camera, (double)x + jx, (double)y + jy);
 }
 
 /* Samples [k0, k1) of every pixel of row y; c0 is the cell of sample k0. */
 static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
-                       int y, uint64_t k0, uint64_t k1, uint64_t c0, uint64_t *segments,
+                       int y, uint64_t k0, uint64_t k1, cell c0, uint64_t *segments,
                        uint64_t *dropped)
 {
     int w = img->width;
@@ -103,7 +125,7 @@ static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams,
         size_t idx = (size_t)y * (size_t)w + (size_t)x;
         mc_rng rng = streams[idx];
         rt_pixel *px = &img->px[idx];
-        uint64_t c = c0;
+        cell c = c0;
         for (uint64_t k = k0; k < k1; k++) {
             rt_ray r = sample_ray(job, jt, x, y, k, &c, &rng);
             vec3 L = rt_radiance(job->scene, &job->path, r, &rng, segments);
@@ -118,14 +140,15 @@ static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams,
  * next sample, and the path of the current sample. */
 typedef struct lane {
     int x;      /* -1: idle */
-    uint64_t k, c;
+    uint64_t k;
+    cell c;
     mc_rng rng;
     rt_path_state path;
 } lane;
 
 /* Gives lane l pixel x of row y from sample k0 on (x == w: none left). */
 static void lane_take(lane *l, const rt_render_job *job, const jitter *jt, mc_rng *streams, int y,
-                      int x, int w, uint64_t k0, uint64_t c0)
+                      int x, int w, uint64_t k0, cell c0)
 {
     l->x = x < w ? x : -1;
     if (l->x < 0)
@@ -175,7 +198,7 @@ static void turn_diffuse(const rt_render_job *job, lane *lanes, const rt_path_ve
  * pixel of the row; at the end of the row, a lane with no pixel left
  * traces its last ray again and its results are ignored. */
 static void render_row4(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
-                        int y, uint64_t k0, uint64_t k1, uint64_t c0, uint64_t *segments,
+                        int y, uint64_t k0, uint64_t k1, cell c0, uint64_t *segments,
                         uint64_t *dropped)
 {
     int w = img->width, next = 0;
@@ -260,7 +283,7 @@ typedef struct totals {
 static void render_pass(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
                         uint64_t k0, uint64_t k1, totals *tot)
 {
-    uint64_t c0 = k0 < jt->m ? mulmod(k0, jt->stride, jt->m) : 0;
+    cell c0 = cell_of(jt, k0 < jt->m ? mulmod(k0, jt->stride, jt->m) : 0);
     int next_row = 0, nt = job->threads > 0 ? job->threads : omp_get_max_threads();
     uint64_t total = job->spp * (uint64_t)img->width * (uint64_t)img->height;
 #pragma omp parallel num_threads(nt)
