@@ -199,13 +199,18 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
     }
     const rt_material *m = rt_scene_material(s, h->material);
     p->L = vec3_add(p->L, vec3_mul(p->beta, rt_material_emitted(m, h)));
-    if (!rt_material_scatter(m, p->ray, h, rng, &v->sr)) {
+    if (!rt_material_scatter(m, &p->ray, h, rng, &v->sr)) {
         p->done = true;
         return false;
     }
     if (v->sr.specular) {
         p->beta = vec3_mul(p->beta, v->sr.attenuation);
-        p->ray = v->sr.ray;
+        /* Field by field: the material has just stored the ray as two
+         * vec3s (a 16- and an 8-byte store each), and a whole-struct copy
+         * loads it in 16-byte pieces, two of which straddle those stores
+         * and so wait for them to retire instead of being forwarded. */
+        p->ray.origin = v->sr.ray.origin;
+        p->ray.dir = v->sr.ray.dir;
         path_next(ps, p, rng);
         return false;
     }
@@ -359,7 +364,7 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
             L = vec3_add(L, vec3_scale(vec3_mul(beta, le), w));
         }
         rt_scatter sr;
-        if (!hit || !rt_material_scatter(m, r, &h, rng, &sr))
+        if (!hit || !rt_material_scatter(m, &r, &h, rng, &sr))
             break;
         if (sr.specular) {
             beta = vec3_mul(beta, sr.attenuation);

@@ -49,8 +49,14 @@ vec3 rt_lights4_generate(const rt_lights4 *at, int k, mc_rng *rng)
                              at->one_minus_cos[i][k], u1, u2);
 }
 
+/* The list's average sum / n. For n a power of two, 1 / n is exact and
+ * sum * (1 / n) is the correctly rounded sum / n as the quotient is: the
+ * same bits for a multiplication instead of a division (on the path from
+ * the direction to the throughput, 13 cycles of latency become 3). */
+static bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
+
 #if defined(__x86_64__) && defined(__GNUC__)
-#define RT_LIGHTS4_AVX2 1
+#define RT_LIGHTS4_X86 1
 #include <immintrin.h>
 
 /* Each statement below is the vector form of the line of render/lights.h
@@ -108,6 +114,39 @@ __attribute__((target("avx2"))) static void prepare_avx2(rt_lights4 *at, const v
     }
 }
 
+/* The helpers below are AVX2 and inline into the AVX-512 functions too
+ * (a callee whose instruction set is a subset of its caller's). */
+
+/* rt_light_quad_value's s = w . (q x v) and t = w . (u x q) at the point
+ * q = (origin + r d) - corner of the quad's plane. */
+__attribute__((target("avx2"))) static inline void quad_st(const rt_light *l, __m256d ox,
+                                                           __m256d oy, __m256d oz, __m256d dx,
+                                                           __m256d dy, __m256d dz, __m256d r,
+                                                           __m256d *s, __m256d *t)
+{
+    __m256d qx = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(r, dx)), _mm256_set1_pd(l->q.x)),
+            qy = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(r, dy)), _mm256_set1_pd(l->q.y)),
+            qz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(r, dz)), _mm256_set1_pd(l->q.z));
+    __m256d ux = _mm256_set1_pd(l->u.x), uy = _mm256_set1_pd(l->u.y), uz = _mm256_set1_pd(l->u.z);
+    __m256d vx = _mm256_set1_pd(l->v.x), vy = _mm256_set1_pd(l->v.y), vz = _mm256_set1_pd(l->v.z);
+    __m256d wx = _mm256_set1_pd(l->w.x), wy = _mm256_set1_pd(l->w.y), wz = _mm256_set1_pd(l->w.z);
+    __m256d cx = _mm256_sub_pd(_mm256_mul_pd(qy, vz), _mm256_mul_pd(qz, vy)),
+            cy = _mm256_sub_pd(_mm256_mul_pd(qz, vx), _mm256_mul_pd(qx, vz)),
+            cz = _mm256_sub_pd(_mm256_mul_pd(qx, vy), _mm256_mul_pd(qy, vx));
+    *s = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(wx, cx), _mm256_mul_pd(wy, cy)), _mm256_mul_pd(wz, cz));
+    cx = _mm256_sub_pd(_mm256_mul_pd(uy, qz), _mm256_mul_pd(uz, qy));
+    cy = _mm256_sub_pd(_mm256_mul_pd(uz, qx), _mm256_mul_pd(ux, qz));
+    cz = _mm256_sub_pd(_mm256_mul_pd(ux, qy), _mm256_mul_pd(uy, qx));
+    *t = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(wx, cx), _mm256_mul_pd(wy, cy)), _mm256_mul_pd(wz, cz));
+}
+
+/* vec3_dot of (ax, ay, az) and (bx, by, bz), summed left to right. */
+__attribute__((target("avx2"))) static inline __m256d dot3(__m256d ax, __m256d ay, __m256d az,
+                                                           __m256d bx, __m256d by, __m256d bz)
+{
+    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ax, bx), _mm256_mul_pd(ay, by)), _mm256_mul_pd(az, bz));
+}
+
 __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, const vec3 d[4],
                                                        double out[4])
 {
@@ -123,38 +162,19 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
         const rt_light *l = &at->lights[i];
         if (l->kind != RT_PRIM_QUAD) {
             /* d . axis < cos_max - rim ? 0 : cone */
-            __m256d dd = _mm256_add_pd(
-                _mm256_add_pd(_mm256_mul_pd(dx, _mm256_loadu_pd(at->ax[i])),
-                              _mm256_mul_pd(dy, _mm256_loadu_pd(at->ay[i]))),
-                _mm256_mul_pd(dz, _mm256_loadu_pd(at->az[i])));
+            __m256d dd = dot3(dx, dy, dz, _mm256_loadu_pd(at->ax[i]), _mm256_loadu_pd(at->ay[i]),
+                                   _mm256_loadu_pd(at->az[i]));
             __m256d rim = _mm256_sub_pd(_mm256_loadu_pd(at->cos_max[i]), _mm256_set1_pd(PDF_CONE_RIM_TOL));
             __m256d off = _mm256_cmp_pd(dd, rim, _CMP_LT_OQ);
             sum = _mm256_add_pd(sum, _mm256_andnot_pd(off, _mm256_loadu_pd(at->cone[i])));
             continue;
         }
         /* rt_light_quad_value: denom = normal . d, r = num / denom */
-        __m256d denom = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(l->normal.x), dx),
-                                                    _mm256_mul_pd(_mm256_set1_pd(l->normal.y), dy)),
-                                      _mm256_mul_pd(_mm256_set1_pd(l->normal.z), dz));
+        __m256d denom = dot3(_mm256_set1_pd(l->normal.x), _mm256_set1_pd(l->normal.y),
+                                  _mm256_set1_pd(l->normal.z), dx, dy, dz);
         __m256d r = _mm256_div_pd(_mm256_loadu_pd(at->num[i]), denom);
-        /* q = (origin + r d) - corner */
-        __m256d qx = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(r, dx)), _mm256_set1_pd(l->q.x)),
-                qy = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(r, dy)), _mm256_set1_pd(l->q.y)),
-                qz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(r, dz)), _mm256_set1_pd(l->q.z));
-        __m256d ux = _mm256_set1_pd(l->u.x), uy = _mm256_set1_pd(l->u.y), uz = _mm256_set1_pd(l->u.z);
-        __m256d vx = _mm256_set1_pd(l->v.x), vy = _mm256_set1_pd(l->v.y), vz = _mm256_set1_pd(l->v.z);
-        __m256d wx = _mm256_set1_pd(l->w.x), wy = _mm256_set1_pd(l->w.y), wz = _mm256_set1_pd(l->w.z);
-        /* s = w . (q x v), t = w . (u x q) */
-        __m256d cx = _mm256_sub_pd(_mm256_mul_pd(qy, vz), _mm256_mul_pd(qz, vy)),
-                cy = _mm256_sub_pd(_mm256_mul_pd(qz, vx), _mm256_mul_pd(qx, vz)),
-                cz = _mm256_sub_pd(_mm256_mul_pd(qx, vy), _mm256_mul_pd(qy, vx));
-        __m256d s = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(wx, cx), _mm256_mul_pd(wy, cy)),
-                                  _mm256_mul_pd(wz, cz));
-        cx = _mm256_sub_pd(_mm256_mul_pd(uy, qz), _mm256_mul_pd(uz, qy));
-        cy = _mm256_sub_pd(_mm256_mul_pd(uz, qx), _mm256_mul_pd(ux, qz));
-        cz = _mm256_sub_pd(_mm256_mul_pd(ux, qy), _mm256_mul_pd(uy, qx));
-        __m256d t = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(wx, cx), _mm256_mul_pd(wy, cy)),
-                                  _mm256_mul_pd(wz, cz));
+        __m256d s, t;
+        quad_st(l, ox, oy, oz, dx, dy, dz, r, &s, &t);
         /* denom != 0, r > 0, s and t within the edges (ordered: NaN fails) */
         __m256d ok = _mm256_and_pd(_mm256_cmp_pd(denom, zero, _CMP_NEQ_OQ),
                                    _mm256_cmp_pd(r, zero, _CMP_GT_OQ));
@@ -168,20 +188,148 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
         sum = _mm256_add_pd(sum, _mm256_and_pd(ok, v));
     }
     /* the list's average */
-    _mm256_storeu_pd(out, _mm256_div_pd(sum, _mm256_set1_pd((double)at->n)));
+    __m256d avg = power_of_two(at->n) ? _mm256_mul_pd(sum, _mm256_set1_pd(1.0 / (double)at->n))
+                                      : _mm256_div_pd(sum, _mm256_set1_pd((double)at->n));
+    _mm256_storeu_pd(out, avg);
+}
+
+/* prepare_avx2 and value_avx2 with the comparisons in mask registers: a
+ * selection or a zeroing becomes the mask of the operation that produces
+ * the value (a masked square root, division or multiplication), and the
+ * tests of a quad's value chain through masked comparisons instead of
+ * vector ands. Lanes that a mask leaves out get exactly the bits the AVX2
+ * selection gives them (+0 is the all-zero pattern, like an and with a
+ * false mask); the arithmetic of the lanes kept is the same. Adding a
+ * masked-off density as a lane left unchanged instead of as + 0 is the
+ * same too: every partial sum is +0 or positive (densities are >= 0,
+ * never -0), and s + 0 = s for those. */
+__attribute__((target("avx2,avx512f,avx512vl"))) static void prepare_avx512(rt_lights4 *at,
+                                                                          const vec3 origin[4])
+{
+    __m256d ox = _mm256_setr_pd(origin[0].x, origin[1].x, origin[2].x, origin[3].x),
+            oy = _mm256_setr_pd(origin[0].y, origin[1].y, origin[2].y, origin[3].y),
+            oz = _mm256_setr_pd(origin[0].z, origin[1].z, origin[2].z, origin[3].z);
+    _mm256_storeu_pd(at->ox, ox);
+    _mm256_storeu_pd(at->oy, oy);
+    _mm256_storeu_pd(at->oz, oz);
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    for (int i = 0; i < at->n; i++) {
+        const rt_light *l = &at->lights[i];
+        if (l->kind == RT_PRIM_QUAD) {
+            __m256d num = dot3(_mm256_set1_pd(l->normal.x), _mm256_set1_pd(l->normal.y),
+                                      _mm256_set1_pd(l->normal.z), _mm256_sub_pd(_mm256_set1_pd(l->q.x), ox),
+                                      _mm256_sub_pd(_mm256_set1_pd(l->q.y), oy),
+                                      _mm256_sub_pd(_mm256_set1_pd(l->q.z), oz));
+            _mm256_storeu_pd(at->num[i], num);
+            continue;
+        }
+        __m256d vx = _mm256_sub_pd(_mm256_set1_pd(l->center.x), ox),
+                vy = _mm256_sub_pd(_mm256_set1_pd(l->center.y), oy),
+                vz = _mm256_sub_pd(_mm256_set1_pd(l->center.z), oz);
+        __m256d dist_sq = dot3(vx, vy, vz, vx, vy, vz);
+        __m256d r2 = _mm256_set1_pd(l->radius * l->radius);
+        __mmask8 outside = _mm256_cmp_pd_mask(dist_sq, r2, _CMP_GT_OQ);
+        __m256d c = _mm256_mask_sqrt_pd(_mm256_set1_pd(-1.0), outside,
+                                        _mm256_div_pd(_mm256_sub_pd(dist_sq, r2), dist_sq));
+        __m256d h = _mm256_mask_div_pd(_mm256_set1_pd(2.0), outside, _mm256_div_pd(r2, dist_sq),
+                                       _mm256_add_pd(one, c));
+        _mm256_storeu_pd(at->cos_max[i], c);
+        _mm256_storeu_pd(at->one_minus_cos[i], h);
+        __m256d s = _mm256_div_pd(one, _mm256_sqrt_pd(dist_sq));
+        __mmask8 pos = _mm256_cmp_pd_mask(dist_sq, zero, _CMP_GT_OQ);
+        _mm256_storeu_pd(at->ax[i], _mm256_maskz_mul_pd(pos, s, vx));
+        _mm256_storeu_pd(at->ay[i], _mm256_maskz_mul_pd(pos, s, vy));
+        _mm256_storeu_pd(at->az[i], _mm256_mask_mul_pd(one, pos, s, vz));
+        __mmask8 open = _mm256_cmp_pd_mask(h, zero, _CMP_GT_OQ);
+        _mm256_storeu_pd(at->cone[i],
+                         _mm256_maskz_div_pd(open, one, _mm256_mul_pd(_mm256_set1_pd(MC_2PI), h)));
+    }
+}
+
+__attribute__((target("avx2,avx512f,avx512vl"))) static void value_avx512(const rt_lights4 *at,
+                                                                        const vec3 d[4], double out[4])
+{
+    __m256d dx = _mm256_setr_pd(d[0].x, d[1].x, d[2].x, d[3].x),
+            dy = _mm256_setr_pd(d[0].y, d[1].y, d[2].y, d[3].y),
+            dz = _mm256_setr_pd(d[0].z, d[1].z, d[2].z, d[3].z);
+    __m256d ox = _mm256_loadu_pd(at->ox), oy = _mm256_loadu_pd(at->oy), oz = _mm256_loadu_pd(at->oz);
+    const __m256d zero = _mm256_setzero_pd(), lo = _mm256_set1_pd(-PDF_QUAD_EDGE_TOL),
+                  hi = _mm256_set1_pd(1.0 + PDF_QUAD_EDGE_TOL);
+    const __m256d sign = _mm256_set1_pd(-0.0);
+    __m256d sum = zero;
+    for (int i = 0; i < at->n; i++) {
+        const rt_light *l = &at->lights[i];
+        if (l->kind != RT_PRIM_QUAD) {
+            __m256d dd = dot3(dx, dy, dz, _mm256_loadu_pd(at->ax[i]), _mm256_loadu_pd(at->ay[i]),
+                                     _mm256_loadu_pd(at->az[i]));
+            __m256d rim = _mm256_sub_pd(_mm256_loadu_pd(at->cos_max[i]), _mm256_set1_pd(PDF_CONE_RIM_TOL));
+            /* not (dd < rim), NaN included: the lanes the cone covers */
+            __mmask8 on = _mm256_cmp_pd_mask(dd, rim, _CMP_NLT_UQ);
+            sum = _mm256_mask_add_pd(sum, on, sum, _mm256_loadu_pd(at->cone[i]));
+            continue;
+        }
+        __m256d denom = dot3(_mm256_set1_pd(l->normal.x), _mm256_set1_pd(l->normal.y),
+                                    _mm256_set1_pd(l->normal.z), dx, dy, dz);
+        __m256d r = _mm256_div_pd(_mm256_loadu_pd(at->num[i]), denom);
+        __m256d s, t;
+        quad_st(l, ox, oy, oz, dx, dy, dz, r, &s, &t);
+        __mmask8 ok = _mm256_cmp_pd_mask(denom, zero, _CMP_NEQ_OQ);
+        ok = _mm256_mask_cmp_pd_mask(ok, r, zero, _CMP_GT_OQ);
+        ok = _mm256_mask_cmp_pd_mask(ok, s, lo, _CMP_GE_OQ);
+        ok = _mm256_mask_cmp_pd_mask(ok, s, hi, _CMP_LE_OQ);
+        ok = _mm256_mask_cmp_pd_mask(ok, t, lo, _CMP_GE_OQ);
+        ok = _mm256_mask_cmp_pd_mask(ok, t, hi, _CMP_LE_OQ);
+        __m256d c = _mm256_andnot_pd(sign, denom);
+        ok = _mm256_mask_cmp_pd_mask(ok, c, zero, _CMP_GT_OQ);
+        __m256d v = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(l->inv_area), _mm256_mul_pd(r, r)), c);
+        sum = _mm256_mask_add_pd(sum, ok, sum, v);
+    }
+    __m256d avg = power_of_two(at->n) ? _mm256_mul_pd(sum, _mm256_set1_pd(1.0 / (double)at->n))
+                                      : _mm256_div_pd(sum, _mm256_set1_pd((double)at->n));
+    _mm256_storeu_pd(out, avg);
 }
 #endif
 
-void rt_lights4_prepare(rt_lights4 *at, const rt_light *lights, int n,
-                        const vec3 origin[RT_LIGHTS4_LANES])
+bool rt_lights4_isa_available(rt_lights4_isa isa)
+{
+    switch (isa) {
+    case RT_LIGHTS4_PORTABLE:
+        return true;
+#ifdef RT_LIGHTS4_X86
+    case RT_LIGHTS4_AVX2:
+        return __builtin_cpu_supports("avx2");
+    case RT_LIGHTS4_AVX512:
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("avx512f") &&
+               __builtin_cpu_supports("avx512vl");
+#endif
+    default:
+        return false;
+    }
+}
+
+rt_lights4_isa rt_lights4_isa_best(void)
+{
+    if (rt_lights4_isa_available(RT_LIGHTS4_AVX512))
+        return RT_LIGHTS4_AVX512;
+    return rt_lights4_isa_available(RT_LIGHTS4_AVX2) ? RT_LIGHTS4_AVX2 : RT_LIGHTS4_PORTABLE;
+}
+
+void rt_lights4_prepare_isa(rt_lights4_isa isa, rt_lights4 *at, const rt_light *lights, int n,
+                            const vec3 origin[RT_LIGHTS4_LANES])
 {
     at->lights = lights;
     at->n = n;
-#ifdef RT_LIGHTS4_AVX2
-    if (__builtin_cpu_supports("avx2")) {
+#ifdef RT_LIGHTS4_X86
+    if (isa == RT_LIGHTS4_AVX512) {
+        prepare_avx512(at, origin);
+        return;
+    }
+    if (isa == RT_LIGHTS4_AVX2) {
         prepare_avx2(at, origin);
         return;
     }
+#else
+    (void)isa;
 #endif
     for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
         rt_lights_at one;
@@ -190,18 +338,36 @@ void rt_lights4_prepare(rt_lights4 *at, const rt_light *lights, int n,
     }
 }
 
-void rt_lights4_value(const rt_lights4 *at, const vec3 d[RT_LIGHTS4_LANES],
-                      double out[RT_LIGHTS4_LANES])
+void rt_lights4_value_isa(rt_lights4_isa isa, const rt_lights4 *at, const vec3 d[RT_LIGHTS4_LANES],
+                          double out[RT_LIGHTS4_LANES])
 {
-#ifdef RT_LIGHTS4_AVX2
-    if (__builtin_cpu_supports("avx2")) {
+#ifdef RT_LIGHTS4_X86
+    if (isa == RT_LIGHTS4_AVX512) {
+        value_avx512(at, d, out);
+        return;
+    }
+    if (isa == RT_LIGHTS4_AVX2) {
         value_avx2(at, d, out);
         return;
     }
+#else
+    (void)isa;
 #endif
     for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
         rt_lights_at one;
         rt_lights4_lane(at, k, &one);
         out[k] = rt_lights_at_value(&one, d[k]);
     }
+}
+
+void rt_lights4_prepare(rt_lights4 *at, const rt_light *lights, int n,
+                        const vec3 origin[RT_LIGHTS4_LANES])
+{
+    rt_lights4_prepare_isa(rt_lights4_isa_best(), at, lights, n, origin);
+}
+
+void rt_lights4_value(const rt_lights4 *at, const vec3 d[RT_LIGHTS4_LANES],
+                      double out[RT_LIGHTS4_LANES])
+{
+    rt_lights4_value_isa(rt_lights4_isa_best(), at, d, out);
 }

@@ -8,11 +8,14 @@
  * AVX2, one vector instruction per operation of render/lights.h, in the
  * same order and without fused multiply-adds, so that every lane holds
  * bit for bit what render/lights.h (and so the pdf objects of pdf/pdf.h)
- * computes for it; elsewhere, render/lights.h lane by lane.
+ * computes for it (with AVX-512VL, its mask registers for the comparisons
+ * and selections); elsewhere, render/lights.h lane by lane.
  * tests/test_render_pdf.c checks the equality.
  */
 #ifndef RT_LIGHTS4_H
 #define RT_LIGHTS4_H
+
+#include <stdbool.h>
 
 #include "mc/vec3.h"
 #include "render/lights.h"
@@ -40,6 +43,28 @@ void rt_lights4_prepare(rt_lights4 *at, const rt_light *lights, int n,
 
 /* Lane k (0 <= k < 4) as the one-origin form, for rt_lights_at_generate. */
 void rt_lights4_lane(const rt_lights4 *at, int k, rt_lights_at *out);
+
+/* The instruction sets the vector forms may use: every one computes the
+ * same bits (tests/test_render_pdf.c runs each one the processor has). */
+typedef enum rt_lights4_isa {
+    RT_LIGHTS4_PORTABLE, /* render/lights.h lane by lane */
+    RT_LIGHTS4_AVX2,     /* 4 lanes in a ymm register */
+    RT_LIGHTS4_AVX512    /* the same with AVX-512VL mask registers */
+} rt_lights4_isa;
+
+/* Whether this build and this processor can run isa. */
+bool rt_lights4_isa_available(rt_lights4_isa isa);
+
+/* The isa rt_lights4_prepare and rt_lights4_value use: the last available
+ * one of the list above. */
+rt_lights4_isa rt_lights4_isa_best(void);
+
+/* rt_lights4_prepare and rt_lights4_value with the instruction set given
+ * (available, see above). */
+void rt_lights4_prepare_isa(rt_lights4_isa isa, rt_lights4 *at, const rt_light *lights, int n,
+                            const vec3 origin[RT_LIGHTS4_LANES]);
+void rt_lights4_value_isa(rt_lights4_isa isa, const rt_lights4 *at, const vec3 d[RT_LIGHTS4_LANES],
+                          double out[RT_LIGHTS4_LANES]);
 
 /* rt_lights_at_generate of lane k: the same draws, the same direction. */
 vec3 rt_lights4_generate(const rt_lights4 *at, int k, mc_rng *rng);

@@ -112,20 +112,41 @@ double rt_fresnel_schlick_book(double cos_i, double n1, double n2)
 
 /* Glass: reflect with the probability of the Fresnel reflectance, refract
  * otherwise. Choosing by that probability makes the weight of either
- * branch exactly 1 (R / R and T / T). */
-static void scatter_glass(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
+ * branch exactly 1 (R / R and T / T).
+ *
+ * sin^2 theta_t and cos theta_t = sqrt(1 - sin^2 theta_t) are computed
+ * once, by the expressions of transmitted_cos_eta and rt_refract (the
+ * same operands in the same order, eta the same n1 / n2 bits), and shared
+ * by the reflectance (Schlick from the denser side needs cos theta_t) and
+ * the refracted direction: one square root a hit instead of two inside
+ * the glass, and the same numbers, so the same uniforms are drawn and the
+ * same direction comes out. sin^2 theta_t >= 1 is total internal
+ * reflection (transmitted_cos_eta's test); the exactly grazing 1 refracts
+ * along the surface in rt_refract (cos theta_t = sqrt(0) = 0), hence the
+ * 0 there. */
+static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *h, mc_rng *rng,
                           rt_scatter *s)
 {
     double n1 = h->front_face ? 1.0 : m->ior, n2 = h->front_face ? m->ior : 1.0;
     double eta = h->front_face ? m->inv_ior : m->ior; /* n1 / n2 exactly (ior / 1 = ior) */
-    double cos_i = -vec3_dot(in.dir, h->normal);
+    vec3 d = in->dir, n = h->normal;
+    double d_n = vec3_dot(d, n);
+    double cos_i = -d_n;
     cos_i = cos_i < 1.0 ? cos_i : 1.0; /* fmin, as in rt_refract */
-    double r = m->fresnel == RT_FRESNEL_EXACT
-                   ? rt_fresnel_exact(cos_i, n1, n2)
-                   : fresnel_schlick_given(cos_i, m->schlick_r0, eta, n1 <= n2);
+    double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    double cos_t = sin2_t >= 1.0 ? 0.0 : sqrt(1.0 - sin2_t);
+    double r;
+    if (m->fresnel == RT_FRESNEL_EXACT)
+        r = rt_fresnel_exact(cos_i, n1, n2);
+    else if (n1 <= n2)
+        r = schlick(m->schlick_r0, cos_i);
+    else
+        r = sin2_t >= 1.0 ? 1.0 : schlick(m->schlick_r0, cos_t);
     vec3 dir;
-    if (r >= 1.0 || mc_rng_uniform(rng) < r || !rt_refract(in.dir, h->normal, eta, &dir))
-        dir = rt_reflect(in.dir, h->normal);
+    if (r >= 1.0 || mc_rng_uniform(rng) < r || sin2_t > 1.0)
+        dir = vec3_madd(d, n, -2.0 * d_n); /* rt_reflect */
+    else /* rt_refract: Snell for the tangential part, Pythagoras for the normal one */
+        dir = vec3_madd(vec3_scale(vec3_madd(d, n, cos_i), eta), n, -cos_t);
     s->specular = true;
     s->attenuation = m->albedo;
     /* Both directions are unit but for rounding, |dir|^2 = 1 + e with e of
@@ -136,8 +157,8 @@ static void scatter_glass(const rt_material *m, rt_ray in, const rt_hit *h, mc_r
     s->ray = rt_ray_make(h->p, vec3_scale(dir, 1.5 - 0.5 * vec3_length_sq(dir)));
 }
 
-bool rt_material_scatter_specular(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
-                                  rt_scatter *s)
+bool rt_material_scatter_specular(const rt_material *m, const rt_ray *in, const rt_hit *h,
+                                  mc_rng *rng, rt_scatter *s)
 {
     if (m->kind == RT_MAT_DIELECTRIC) {
         scatter_glass(m, in, h, rng, s);
@@ -145,7 +166,7 @@ bool rt_material_scatter_specular(const rt_material *m, rt_ray in, const rt_hit 
     }
     if (m->kind != RT_MAT_METAL)
         return rt_material_scatter(m, in, h, rng, s); /* light, Lambert */
-    vec3 dir = rt_reflect(in.dir, h->normal);
+    vec3 dir = rt_reflect(in->dir, h->normal);
     if (m->fuzz > 0.0) {
         double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
         dir = vec3_add(dir, vec3_scale(smp_uniform_sphere_sample(u1, u2), m->fuzz));

@@ -80,15 +80,19 @@ static inline vec3 rt_material_emitted(const rt_material *m, const rt_hit *h)
 }
 
 /* rt_material_scatter for metal and glass (the specular kinds). */
-bool rt_material_scatter_specular(const rt_material *m, rt_ray in, const rt_hit *h, mc_rng *rng,
-                                  rt_scatter *s);
+bool rt_material_scatter_specular(const rt_material *m, const rt_ray *in, const rt_hit *h,
+                                  mc_rng *rng, rt_scatter *s);
 
-/* Fills *s for the ray `in` scattered at h; returns false when the
+/* Fills *s for the ray *in scattered at h; returns false when the
  * material absorbs it (a light, or fuzzed metal sent below the surface).
  * Draws uniforms from rng only for specular events. Inline, with the
  * diffuse case first: it follows every hit, and most hits in the Cornell
- * box are diffuse. */
-static inline bool rt_material_scatter(const rt_material *m, rt_ray in, const rt_hit *h,
+ * box are diffuse. The ray goes by pointer: by value (48 bytes, passed in
+ * memory) the caller copied it to the stack just before the call in
+ * 16-byte pieces that the callee's loads of dir straddled, and a load
+ * that straddles two stores still in flight waits for both to retire
+ * (store-to-load forwarding fails): several percent of the renderer. */
+static inline bool rt_material_scatter(const rt_material *m, const rt_ray *in, const rt_hit *h,
                                        mc_rng *rng, rt_scatter *s)
 {
     if (m->kind == RT_MAT_LAMBERT) {

@@ -128,7 +128,7 @@ static void test_dielectric_reflects_with_fresnel_probability(void **state)
     int reflected = 0;
     for (int i = 0; i < n; i++) {
         rt_scatter s;
-        assert_true(rt_material_scatter(&glass, in, &h, &rng, &s));
+        assert_true(rt_material_scatter(&glass, &in, &h, &rng, &s));
         assert_true(s.specular);
         reflected += s.ray.dir.z > 0.0;
     }
@@ -158,7 +158,7 @@ static void test_dielectric_directions_stay_unit(void **state)
         if (vec3_dot(dir, h.normal) == 0.0)
             continue;
         rt_scatter s;
-        assert_true(rt_material_scatter(&glass[i & 1], rt_ray_make(v3(0, 0, 0), dir), &h, &rng, &s));
+        assert_true(rt_material_scatter(&glass[i & 1], &(rt_ray){v3(0, 0, 0), dir}, &h, &rng, &s));
         double cos_in = -vec3_dot(dir, h.normal), cos_out = vec3_dot(s.ray.dir, h.normal);
         if (cos_out > 0.0) /* reflected: the same angle */
             assert_true(fabs(cos_out - cos_in) < 1e-12);
@@ -192,10 +192,10 @@ static void test_lambert_metal_light(void **state)
     back.front_face = false;
     assert_near(rt_material_emitted(&light, &back).x, 0.0, 0.0);
     rt_scatter s;
-    assert_false(rt_material_scatter(&light, rt_ray_make(v3(0, 0, 1), v3(0, 0, -1)), &h, NULL, &s));
+    assert_false(rt_material_scatter(&light, &(rt_ray){v3(0, 0, 1), v3(0, 0, -1)}, &h, NULL, &s));
     rt_material al = rt_metal(v3(0.8, 0.85, 0.88), 0.0);
     mc_rng rng = mc_rng_derive(23u, 0u);
-    assert_true(rt_material_scatter(&al, rt_ray_make(v3(-0.6, 0, 0.8), v3(0.6, 0, -0.8)), &h, &rng, &s));
+    assert_true(rt_material_scatter(&al, &(rt_ray){v3(-0.6, 0, 0.8), v3(0.6, 0, -0.8)}, &h, &rng, &s));
     assert_true(s.specular);
     assert_near(s.ray.dir.x, 0.6, 1e-15);
     assert_near(s.ray.dir.z, 0.8, 1e-15);

@@ -83,8 +83,8 @@ static void test_lights_match_pdf_objects(void **state)
  * and the values, for 25000 batches of four origins and directions
  * (random, generated toward the lights, and along a quad's plane, where
  * its density divides by 0). Some origins are the centre of a sphere
- * light (dist 0) or inside it. */
-static void check_lights4(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
+ * light (dist 0) or inside it. With the instruction set isa. */
+static void check_lights4(rt_lights4_isa isa, const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
 {
     mc_rng rng = mc_rng_derive(seed, 0u);
     const rt_light *fast = rt_scene_lights(s);
@@ -101,7 +101,7 @@ static void check_lights4(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
             rt_lights_prepare(&one[k], fast, n, o[k]);
         }
         rt_lights4 at4;
-        rt_lights4_prepare(&at4, fast, n, o);
+        rt_lights4_prepare_isa(isa, &at4, fast, n, o);
         for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
             for (int i = 0; i < n; i++) {
                 if (fast[i].kind == RT_PRIM_QUAD) {
@@ -129,34 +129,47 @@ static void check_lights4(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
             }
         }
         double v[RT_LIGHTS4_LANES];
-        rt_lights4_value(&at4, d, v);
+        rt_lights4_value_isa(isa, &at4, d, v);
         for (int k = 0; k < RT_LIGHTS4_LANES; k++)
             if (!(v[k] == rt_lights_at_value(&one[k], d[k])))
-                fail_msg("batch %d lane %d: rt_lights4_value %.17g, rt_lights_at_value %.17g", it, k, v[k],
-                         rt_lights_at_value(&one[k], d[k]));
+                fail_msg("isa %d batch %d lane %d: rt_lights4_value %.17g, rt_lights_at_value %.17g", (int)isa,
+                         it, k, v[k], rt_lights_at_value(&one[k], d[k]));
     }
 }
 
+/* Every instruction set this processor has (the renderer's, from
+ * rt_lights4_isa_best, among them), on the book's lights (n = 2, whose
+ * average is a multiplication by 1/2) and on five lights (a division). */
 static void test_lights4_match_lights(void **state)
 {
     (void)state;
-    rt_camera_params cp;
-    rt_scene *s = rt_scene_named("book", &cp);
-    check_lights4(s, v3(0, 0, 0), v3(555, 555, 555), 34u);
-    rt_scene_destroy(s);
-    /* Five lights of both kinds in mixed order, of very different sizes. */
-    s = rt_scene_create();
-    int white = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
-    rt_scene_add(s, rt_scene_quad(s, v3(-50, 0, -50), v3(100, 0, 0), v3(0, 0, 100), white));
-    rt_scene_add_light(s, rt_scene_quad(s, v3(-5, 20, -5), v3(10, 0, 0), v3(0, 0, 10), white));
-    rt_scene_add_light(s, rt_scene_sphere(s, v3(10, 5, 3), 4.0, white));
-    rt_scene_add_light(s, rt_scene_quad(s, v3(0, 1, 0), v3(3, 4, 0), v3(0, 0.5, 7), white));
-    rt_scene_add_light(s, rt_scene_sphere(s, v3(-20, 30, 8), 1e-6, white));
-    rt_scene_add_light(s, rt_scene_quad(s, v3(8, -3, 2), v3(0, 6, 1), v3(-2, 0, 5), white));
-    assert_int_equal(rt_scene_build(s), 0);
-    check_lights4(s, v3(-30, -10, -30), v3(30, 40, 30), 35u);
-    rt_scene_destroy(s);
-    printf("rt_lights4 = render/lights.h on 2 x 10^5 origins and directions\n");
+    static const char *const isa_names[3] = {"portable", "AVX2", "AVX-512VL"};
+    int ran = 0;
+    bool best_ran = false;
+    for (int isa = RT_LIGHTS4_PORTABLE; isa <= RT_LIGHTS4_AVX512; isa++) {
+        if (!rt_lights4_isa_available((rt_lights4_isa)isa))
+            continue;
+        rt_camera_params cp;
+        rt_scene *s = rt_scene_named("book", &cp);
+        check_lights4((rt_lights4_isa)isa, s, v3(0, 0, 0), v3(555, 555, 555), 34u);
+        rt_scene_destroy(s);
+        /* Five lights of both kinds in mixed order, of very different sizes. */
+        s = rt_scene_create();
+        int white = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+        rt_scene_add(s, rt_scene_quad(s, v3(-50, 0, -50), v3(100, 0, 0), v3(0, 0, 100), white));
+        rt_scene_add_light(s, rt_scene_quad(s, v3(-5, 20, -5), v3(10, 0, 0), v3(0, 0, 10), white));
+        rt_scene_add_light(s, rt_scene_sphere(s, v3(10, 5, 3), 4.0, white));
+        rt_scene_add_light(s, rt_scene_quad(s, v3(0, 1, 0), v3(3, 4, 0), v3(0, 0.5, 7), white));
+        rt_scene_add_light(s, rt_scene_sphere(s, v3(-20, 30, 8), 1e-6, white));
+        rt_scene_add_light(s, rt_scene_quad(s, v3(8, -3, 2), v3(0, 6, 1), v3(-2, 0, 5), white));
+        assert_int_equal(rt_scene_build(s), 0);
+        check_lights4((rt_lights4_isa)isa, s, v3(-30, -10, -30), v3(30, 40, 30), 35u);
+        rt_scene_destroy(s);
+        printf("rt_lights4 (%s) = render/lights.h on 2 x 10^5 origins and directions\n", isa_names[isa]);
+        ran++;
+        best_ran |= isa == (int)rt_lights4_isa_best();
+    }
+    assert_true(ran >= 1 && best_ran);
 }
 
 /* Whole images in both modes, every strategy, two scenes: the same bits. */
