@@ -340,6 +340,16 @@ AVX2 unsigned records(const rt_bvh4 *b4, const rt_prim *prims, const lanes *L, n
     return (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(hit));
 }
 
+#define PRIM(w) _mm256_load_pd((const double *)(const void *)(w).prim)
+/* Every quad of one kind: its distances, then INSIDE and KEEP. */
+#define QUADS(n, kind, test, INSIDE, KEEP)                                                          \
+    for (int q = 0; q < b4->n; q++) {                                                                \
+        __m256d a, b, t = test(&L, &b4->kind[q], &a, &b);                                            \
+        KEEP(&nb, t, INSIDE(t, a, b, lo), PRIM(b4->kind[q]));                                        \
+    }
+
+/* The root leaf against the four rays, each lane keeping its nearest
+ * hit; then the records. */
 __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, const rt_prim *prims,
                                                          const rt_ray r[RT_BVH_LANES], double tmin,
                                                          double tmax, rt_hit h[RT_BVH_LANES])
@@ -347,22 +357,62 @@ __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, con
     lanes L = load_rays(r);
     const __m256d lo = _mm256_set1_pd(tmin);
     nearest nb = {_mm256_set1_pd(tmax), _mm256_castsi256_pd(_mm256_set1_epi64x(-1))};
-    __m256d t, a, b;
-#define PRIM(w) _mm256_load_pd((const double *)(const void *)(w).prim)
-    for (int q = 0; q < b4->n_axis; q++)
-        t = quad_axis(&L, &b4->axis[q], &a, &b), keep(&nb, t, inside(t, a, b, lo), PRIM(b4->axis[q]));
-    for (int q = 0; q < b4->n_turned; q++)
-        t = quad_turned(&L, &b4->turned[q], &a, &b), keep(&nb, t, inside(t, a, b, lo), PRIM(b4->turned[q]));
-    for (int q = 0; q < b4->n_flat; q++)
-        t = quad_flat(&L, &b4->flat[q], &a, &b), keep(&nb, t, inside(t, a, b, lo), PRIM(b4->flat[q]));
-    for (int q = 0; q < b4->n_other; q++)
-        t = quad_other(&L, &b4->other[q], &a, &b), keep(&nb, t, inside(t, a, b, lo), PRIM(b4->other[q]));
+    QUADS(n_axis, axis, quad_axis, inside, keep)
+    QUADS(n_turned, turned, quad_turned, inside, keep)
+    QUADS(n_flat, flat, quad_flat, inside, keep)
+    QUADS(n_other, other, quad_other, inside, keep)
     for (int i = b4->n_quads; i < b4->n; i++) {
-        __m256d disc;
-        t = sphere(&L, &prims[i].as.sphere, lo, &disc);
+        __m256d disc, t = sphere(&L, &prims[i].as.sphere, lo, &disc);
         __m256d in = _mm256_and_pd(_mm256_cmp_pd(disc, _mm256_setzero_pd(), _CMP_GE_OQ),
                                    _mm256_cmp_pd(t, lo, _CMP_GT_OQ));
         keep(&nb, t, in, _mm256_castsi256_pd(_mm256_set1_epi64x(i)));
+    }
+    return records(b4, prims, &L, nb, h);
+}
+
+/* The same with AVX-512's mask registers (still four lanes of 256 bits,
+ * the same arithmetic): each comparison is masked by the previous ones,
+ * which makes the conjunction without vector ANDs, and the blends read
+ * the mask. Processors with AVX-512 have FMA, but only explicit FMA
+ * intrinsics would use it here: GCC's avx512f target does not enable
+ * FMA, and clang contracts a * b + c only within one C expression, which
+ * the intrinsics never are. */
+#define AVX512 __attribute__((target("avx2,avx512f,avx512vl"), always_inline)) static inline
+
+AVX512 __mmask8 inside512(__m256d t, __m256d a, __m256d b, __m256d lo)
+{
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    __mmask8 in = _mm256_cmp_pd_mask(a, zero, _CMP_GE_OQ);
+    in = _mm256_mask_cmp_pd_mask(in, a, one, _CMP_LE_OQ);
+    in = _mm256_mask_cmp_pd_mask(in, b, zero, _CMP_GE_OQ);
+    in = _mm256_mask_cmp_pd_mask(in, b, one, _CMP_LE_OQ);
+    return _mm256_mask_cmp_pd_mask(in, t, lo, _CMP_GT_OQ);
+}
+
+/* keep with masks. */
+AVX512 void keep512(nearest *nb, __m256d t, __mmask8 in, __m256d prim)
+{
+    __m256d tm = _mm256_mask_blend_pd(in, _mm256_set1_pd(HUGE_VAL), t);
+    nb->i = _mm256_mask_blend_pd(_mm256_cmp_pd_mask(tm, nb->t, _CMP_LT_OQ), nb->i, prim);
+    nb->t = _mm256_min_pd(tm, nb->t);
+}
+
+__attribute__((target("avx2,avx512f,avx512vl"))) static unsigned
+hit4_avx512(const rt_bvh4 *b4, const rt_prim *prims, const rt_ray r[RT_BVH_LANES], double tmin,
+            double tmax, rt_hit h[RT_BVH_LANES])
+{
+    lanes L = load_rays(r);
+    const __m256d lo = _mm256_set1_pd(tmin);
+    nearest nb = {_mm256_set1_pd(tmax), _mm256_castsi256_pd(_mm256_set1_epi64x(-1))};
+    QUADS(n_axis, axis, quad_axis, inside512, keep512)
+    QUADS(n_turned, turned, quad_turned, inside512, keep512)
+    QUADS(n_flat, flat, quad_flat, inside512, keep512)
+    QUADS(n_other, other, quad_other, inside512, keep512)
+    for (int i = b4->n_quads; i < b4->n; i++) {
+        __m256d disc, t = sphere(&L, &prims[i].as.sphere, lo, &disc);
+        __mmask8 in = _mm256_mask_cmp_pd_mask(_mm256_cmp_pd_mask(disc, _mm256_setzero_pd(), _CMP_GE_OQ),
+                                              t, lo, _CMP_GT_OQ);
+        keep512(&nb, t, in, _mm256_castsi256_pd(_mm256_set1_epi64x(i)));
     }
     return records(b4, prims, &L, nb, h);
 }
@@ -371,6 +421,8 @@ __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, con
 rt_bvh4_isa rt_bvh4_isa_best(void)
 {
 #ifdef RT_BVH4_X86
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl"))
+        return RT_BVH4_AVX512;
     if (__builtin_cpu_supports("avx2"))
         return RT_BVH4_AVX2;
 #endif
@@ -382,7 +434,9 @@ unsigned rt_bvh4_hit(rt_bvh4_isa isa, const rt_bvh *bvh, const rt_prim *prims,
 {
 #ifdef RT_BVH4_X86
     /* tmin >= 0: see "Exactness" above. */
-    if (bvh->root4 && tmin >= 0.0 && isa != RT_BVH4_SCALAR)
+    if (bvh->root4 && tmin >= 0.0 && isa == RT_BVH4_AVX512)
+        return hit4_avx512(bvh->root4, prims, r, tmin, tmax, h);
+    if (bvh->root4 && tmin >= 0.0 && isa == RT_BVH4_AVX2)
         return hit4_avx2(bvh->root4, prims, r, tmin, tmax, h);
 #else
     (void)isa;
