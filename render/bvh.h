@@ -101,8 +101,8 @@ bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double
  * Each ray gets the same distance and hit record as from rt_bvh_hit (on
  * an exact tie between two primitives either may be reported). For a tree
  * whose root is a leaf (a small scene such as the Cornell box), processors
- * with AVX2 test each primitive against the four rays in one vector
- * instruction, four independent computations where a single ray's test is
+ * with AVX2 (or AVX-512, with mask registers) test each primitive against
+ * the four rays in one vector instruction, four independent computations where a single ray's test is
  * one long dependent chain; otherwise the rays are traced one by one.
  * Callers with fewer rays repeat one of them. */
 unsigned rt_bvh_hit4(const rt_bvh *bvh, const rt_prim *prims, const rt_ray r[RT_BVH_LANES],

@@ -246,7 +246,8 @@ AVX2 __m256d inside(__m256d t, __m256d a, __m256d b, __m256d lo)
 {
     const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
     __m256d in = _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ), _mm256_cmp_pd(a, one, _CMP_LE_OQ));
-    in = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ), _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
+    in = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
+                                          _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
     return _mm256_and_pd(in, _mm256_cmp_pd(t, lo, _CMP_GT_OQ));
 }
 
@@ -260,8 +261,10 @@ AVX2 lanes load_rays(const rt_ray r[RT_BVH_LANES])
             r3 = _mm256_loadu_pd(p + 18);
     __m256d e0 = _mm256_unpacklo_pd(r0, r1), e1 = _mm256_unpackhi_pd(r0, r1); /* x0 x1 z0 z1, ... */
     __m256d e2 = _mm256_unpacklo_pd(r2, r3), e3 = _mm256_unpackhi_pd(r2, r3);
-    __m256d yz02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p + 4)), _mm_loadu_pd(p + 16), 1);
-    __m256d yz13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p + 10)), _mm_loadu_pd(p + 22), 1);
+    __m256d yz02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p + 4)),
+                                        _mm_loadu_pd(p + 16), 1);
+    __m256d yz13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p + 10)),
+                                        _mm_loadu_pd(p + 22), 1);
     lanes L = {{_mm256_permute2f128_pd(e0, e2, 0x20), _mm256_permute2f128_pd(e1, e3, 0x20),
                 _mm256_permute2f128_pd(e0, e2, 0x31)},
                {_mm256_permute2f128_pd(e1, e3, 0x31), _mm256_unpacklo_pd(yz02, yz13),

@@ -197,8 +197,9 @@ static int check_hit4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, ui
         rt_hit h4[RT_BVH_LANES];
         for (int k = 0; k < RT_BVH_LANES; k++)
             r[k] = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
-        unsigned mask = isa > (int)RT_BVH4_AVX512 ? rt_bvh_hit4(b, prims, r, 1e-3, HUGE_VAL, h4)
-                                                  : rt_bvh4_hit((rt_bvh4_isa)isa, b, prims, r, 1e-3, HUGE_VAL, h4);
+        unsigned mask = isa > (int)RT_BVH4_AVX512
+                            ? rt_bvh_hit4(b, prims, r, 1e-3, HUGE_VAL, h4)
+                            : rt_bvh4_hit((rt_bvh4_isa)isa, b, prims, r, 1e-3, HUGE_VAL, h4);
         for (int k = 0; k < RT_BVH_LANES; k++) {
             rt_hit h1;
             bool hit = rt_bvh_hit(b, prims, &r[k], 1e-3, HUGE_VAL, &h1);
