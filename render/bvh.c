@@ -1,6 +1,8 @@
 /* render/bvh.c - binned SAH construction and stack traversal. */
 #include "render/bvh.h"
 
+#include "render/bvh4.h"
+
 #include <stdlib.h>
 #include <string.h>
 
@@ -211,55 +213,6 @@ static void pack_leaf(rt_bvh *bvh, rt_bvh_node *node, rt_prim *prims)
     }
 }
 
-/* The index of the only nonzero (or NaN) coordinate of (x, y, z), -1 if
- * there is not exactly one. */
-static int single_axis(double x, double y, double z)
-{
-    int nonzero = (x != 0.0) + (y != 0.0) + (z != 0.0);
-    return nonzero != 1 ? -1 : x != 0.0 ? 0 : y != 0.0 ? 1 : 2;
-}
-
-/* Copies the root leaf's quads for rt_bvh_hit4, the axis-aligned ones
- * first, every field repeated in each lane. 0, or -1 when out of memory. */
-static int lay_out_root(rt_bvh *bvh, const rt_bvh_node *root)
-{
-    _Static_assert(sizeof(rt_quad_axis) % 64 == 0 && sizeof(rt_quad_lanes) % 64 == 0,
-                   "rows of 32-byte lanes stay aligned from one quad to the next");
-    /* 256 and 448 bytes: multiples of 64, so every row is aligned. */
-    size_t nq = (size_t)root->n_quads;
-    bvh->root_axis = aligned_alloc(64, nq * sizeof *bvh->root_axis);
-    bvh->root_quads = aligned_alloc(64, nq * sizeof *bvh->root_quads);
-    if (!bvh->root_axis || !bvh->root_quads)
-        return -1;
-    for (int q = 0; q < root->n_quads; q++) {
-        const rt_quad_packet *pk = &bvh->packets[root->packet + q / RT_PACKET];
-        int j = q % RT_PACKET;
-        const double n[3] = {pk->nx[j], pk->ny[j], pk->nz[j]}, o[3] = {pk->qx[j], pk->qy[j], pk->qz[j]};
-        const double ea[3] = {pk->ax[j], pk->ay[j], pk->az[j]}, eb[3] = {pk->bx[j], pk->by[j], pk->bz[j]};
-        int k = single_axis(n[0], n[1], n[2]), ia = single_axis(ea[0], ea[1], ea[2]),
-            ib = single_axis(eb[0], eb[1], eb[2]);
-        if (k >= 0 && ia >= 0 && ib >= 0) {
-            rt_quad_axis *w = &bvh->root_axis[bvh->n_root_axis++];
-            memset(w, 0, sizeof *w);
-            w->k = k, w->i = ia, w->j = ib;
-            for (int l = 0; l < RT_BVH_LANES; l++) {
-                w->n[l] = n[k], w->plane[l] = pk->plane[j], w->qi[l] = o[ia], w->qj[l] = o[ib];
-                w->ea[l] = ea[ia], w->eb[l] = eb[ib], w->prim[l] = pk->prim[j];
-            }
-            continue;
-        }
-        const double *fields[13] = {pk->nx, pk->ny, pk->nz, pk->plane, pk->qx, pk->qy, pk->qz,
-                                    pk->ax, pk->ay, pk->az, pk->bx, pk->by, pk->bz};
-        rt_quad_lanes *w = &bvh->root_quads[bvh->n_root_quads++];
-        for (int l = 0; l < RT_BVH_LANES; l++) {
-            for (int f = 0; f < 13; f++)
-                w->f[f][l] = fields[f][j];
-            w->prim[l] = pk->prim[j];
-        }
-    }
-    return 0;
-}
-
 int rt_bvh_build(rt_bvh *bvh, rt_prim *prims, int n)
 {
     memset(bvh, 0, sizeof *bvh);
@@ -297,7 +250,7 @@ int rt_bvh_build(rt_bvh *bvh, rt_prim *prims, int n)
         if (bvh->nodes[i].count > 0)
             pack_leaf(bvh, &bvh->nodes[i], prims);
     const rt_bvh_node *root = &bvh->nodes[0];
-    if (root->count > 0 && root->n_quads > 0 && lay_out_root(bvh, root) != 0) {
+    if (root->count > 0 && !(bvh->root4 = rt_bvh4_create(prims, root->count, root->n_quads))) {
         rt_bvh_destroy(bvh);
         return -1;
     }
@@ -308,8 +261,7 @@ void rt_bvh_destroy(rt_bvh *bvh)
 {
     free(bvh->nodes);
     free(bvh->packets);
-    free(bvh->root_axis);
-    free(bvh->root_quads);
+    rt_bvh4_destroy(bvh->root4);
     memset(bvh, 0, sizeof *bvh);
 }
 
@@ -603,111 +555,6 @@ bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double
         return hit_avx2(bvh, prims, r, tmin, tmax, h);
 #endif
     return hit_base(bvh, prims, r, tmin, tmax, h);
-}
-
-#ifdef RT_BVH_AVX2
-/* The leaf at the root against four rays, one per lane: the axis-aligned
- * quads (rt_quad_axis), the other quads (quad_t4), then every sphere, each
- * primitive's fields the same in all four lanes. The arithmetic is
- * rt_quad_t's and rt_sphere_t's, expression by expression (no FMA), so
- * every lane's distance is the scalar one bit for bit; each lane keeps its
- * nearest hit so far by blends, strictly nearer wins. */
-__attribute__((target("avx2"))) static unsigned hit4_leaf_avx2(const rt_bvh *bvh,
-                                                                const rt_prim *prims,
-                                                                const rt_ray r[RT_BVH_LANES],
-                                                                double tmin, double tmax,
-                                                                rt_hit h[RT_BVH_LANES])
-{
-    const __m256d ox = _mm256_setr_pd(r[0].origin.x, r[1].origin.x, r[2].origin.x, r[3].origin.x),
-                  oy = _mm256_setr_pd(r[0].origin.y, r[1].origin.y, r[2].origin.y, r[3].origin.y),
-                  oz = _mm256_setr_pd(r[0].origin.z, r[1].origin.z, r[2].origin.z, r[3].origin.z),
-                  dx = _mm256_setr_pd(r[0].dir.x, r[1].dir.x, r[2].dir.x, r[3].dir.x),
-                  dy = _mm256_setr_pd(r[0].dir.y, r[1].dir.y, r[2].dir.y, r[3].dir.y),
-                  dz = _mm256_setr_pd(r[0].dir.z, r[1].dir.z, r[2].dir.z, r[3].dir.z),
-                  lo = _mm256_set1_pd(tmin), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
-    __m256d best = _mm256_set1_pd(tmax);
-    __m256d best_i = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    const rt_bvh_node *nd = &bvh->nodes[0];
-    const __m256d O[3] = {ox, oy, oz}, D[3] = {dx, dy, dz};
-    for (int q = 0; q < bvh->n_root_axis; q++) {
-        /* rt_quad_t with the zero terms of its dot products left out:
-         * adding a signed zero changes a nonzero sum not at all, and a zero
-         * sum at most in sign, which no test below sees (a zero dn gives
-         * t = +-inf or NaN either way, rejected; -0 passes >= 0 as +0
-         * does). Products with the zero coordinates could only be NaN for
-         * an infinite t, also rejected. */
-        const rt_quad_axis *w = &bvh->root_axis[q];
-        __m256d n = _mm256_load_pd(w->n);
-        __m256d t = _mm256_div_pd(_mm256_sub_pd(_mm256_load_pd(w->plane), _mm256_mul_pd(n, O[w->k])),
-                                  _mm256_mul_pd(n, D[w->k]));
-        __m256d a = _mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(O[w->i], _mm256_mul_pd(t, D[w->i])),
-                                                _mm256_load_pd(w->qi)),
-                                  _mm256_load_pd(w->ea));
-        __m256d b = _mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(O[w->j], _mm256_mul_pd(t, D[w->j])),
-                                                _mm256_load_pd(w->qj)),
-                                  _mm256_load_pd(w->eb));
-        __m256d ok = _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ), _mm256_cmp_pd(t, best, _CMP_LT_OQ));
-        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ),
-                                              _mm256_cmp_pd(a, one, _CMP_LE_OQ)));
-        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
-                                              _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
-        best = _mm256_blendv_pd(best, t, ok);
-        best_i = _mm256_blendv_pd(best_i, _mm256_load_pd((const double *)(const void *)w->prim), ok);
-    }
-    for (int q = 0; q < bvh->n_root_quads; q++) {
-        const rt_quad_lanes *w = &bvh->root_quads[q];
-        const double *const fields[13] = {w->f[0], w->f[1], w->f[2],  w->f[3],  w->f[4],
-                                          w->f[5], w->f[6], w->f[7],  w->f[8],  w->f[9],
-                                          w->f[10], w->f[11], w->f[12]};
-        __m256d ok, t = quad_t4(fields, O, D, lo, best, &ok);
-        best = _mm256_blendv_pd(best, t, ok);
-        best_i = _mm256_blendv_pd(best_i, _mm256_load_pd((const double *)(const void *)w->prim), ok);
-    }
-    for (int i = nd->first + nd->n_quads; i < nd->first + nd->count; i++) {
-        const rt_sphere *s = &prims[i].as.sphere;
-        __m256d cx = _mm256_sub_pd(_mm256_set1_pd(s->center.x), ox),
-                cy = _mm256_sub_pd(_mm256_set1_pd(s->center.y), oy),
-                cz = _mm256_sub_pd(_mm256_set1_pd(s->center.z), oz);
-        __m256d hh = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, cx), _mm256_mul_pd(dy, cy)),
-                                   _mm256_mul_pd(dz, cz));
-        __m256d c = _mm256_sub_pd(
-            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(cx, cx), _mm256_mul_pd(cy, cy)), _mm256_mul_pd(cz, cz)),
-            _mm256_set1_pd(s->radius * s->radius));
-        __m256d disc = _mm256_sub_pd(_mm256_mul_pd(hh, hh), c);
-        __m256d sq = _mm256_sqrt_pd(_mm256_max_pd(disc, zero)); /* max gives 0 for a NaN disc */
-        __m256d t1 = _mm256_sub_pd(hh, sq), t2 = _mm256_add_pd(hh, sq);
-        __m256d t = _mm256_blendv_pd(t2, t1, _mm256_cmp_pd(t1, lo, _CMP_GT_OQ));
-        __m256d ok = _mm256_and_pd(_mm256_cmp_pd(disc, zero, _CMP_GE_OQ),
-                                   _mm256_and_pd(_mm256_cmp_pd(t, lo, _CMP_GT_OQ),
-                                                 _mm256_cmp_pd(t, best, _CMP_LT_OQ)));
-        best = _mm256_blendv_pd(best, t, ok);
-        best_i = _mm256_blendv_pd(best_i, _mm256_castsi256_pd(_mm256_set1_epi64x(i)), ok);
-    }
-    double ts[RT_BVH_LANES];
-    int64_t is[RT_BVH_LANES];
-    _mm256_storeu_pd(ts, best);
-    _mm256_storeu_si256((__m256i *)(void *)is, _mm256_castpd_si256(best_i));
-    unsigned mask = 0;
-    for (int k = 0; k < RT_BVH_LANES; k++)
-        if (is[k] >= 0) {
-            rt_prim_hit_record(&prims[is[k]], (int)is[k], r[k], ts[k], &h[k]);
-            mask |= 1u << k;
-        }
-    return mask;
-}
-#endif
-
-unsigned rt_bvh_hit4(const rt_bvh *bvh, const rt_prim *prims, const rt_ray r[RT_BVH_LANES],
-                     double tmin, double tmax, rt_hit h[RT_BVH_LANES])
-{
-#ifdef RT_BVH_AVX2
-    if (bvh->nodes[0].count > 0 && __builtin_cpu_supports("avx2"))
-        return hit4_leaf_avx2(bvh, prims, r, tmin, tmax, h);
-#endif
-    unsigned mask = 0;
-    for (int k = 0; k < RT_BVH_LANES; k++)
-        mask |= (unsigned)rt_bvh_hit(bvh, prims, &r[k], tmin, tmax, &h[k]) << k;
-    return mask;
 }
 
 double rt_bvh_closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, double tmin, double tmax,

@@ -14,7 +14,7 @@
  * A small scene's tree is a single leaf (the Cornell box: twelve quads and
  * a sphere); for it rt_bvh_hit4 turns the loops around and tests each
  * primitive against four rays at once, so that the four tests are
- * independent instead of one ray's long chain.
+ * independent instead of one ray's long chain (render/bvh4.h).
  * Serves the renderer of chapters 4-10 of "Ray Tracing: The Rest of Your
  * Life"; the book itself uses the BVH of its second volume.
  */
@@ -60,40 +60,15 @@ typedef struct rt_quad_packet {
 /* Rays traced together by rt_bvh_hit4. */
 #define RT_BVH_LANES 4
 
-/* One quad with every field repeated RT_BVH_LANES times (the order of
- * rt_quad_packet's fields): what rt_bvh_hit4 tests RT_BVH_LANES rays
- * against with plain vector loads, no broadcasts. */
-typedef struct rt_quad_lanes {
-    double f[13][RT_BVH_LANES];
-    int64_t prim[RT_BVH_LANES];
-} rt_quad_lanes;
-
-/* An axis-aligned quad (the walls of a room, the light, the top of a
- * box): its normal and both dual edge vectors (rt_quad's ea, eb) have one
- * nonzero coordinate each, along axes k, i and j. rt_quad_t's dot
- * products with them then reduce exactly to one product (the other terms
- * are signed zeros), so rt_bvh_hit4 tests it with a quarter of the
- * arithmetic and the same result. Fields repeated RT_BVH_LANES times. */
-typedef struct rt_quad_axis {
-    double n[RT_BVH_LANES], plane[RT_BVH_LANES], qi[RT_BVH_LANES], qj[RT_BVH_LANES];
-    double ea[RT_BVH_LANES], eb[RT_BVH_LANES];
-    int64_t prim[RT_BVH_LANES];
-    int32_t k, i, j, unused;
-    double pad[2]; /* to 256 bytes, with the rows at multiples of 32 */
-} rt_quad_axis;
-
 typedef struct rt_bvh {
     rt_bvh_node *nodes; /* nodes[0] is the root */
     int n_nodes;
     int depth;          /* levels below the root, < RT_BVH_MAX_DEPTH (checked by rt_bvh_build) */
     rt_quad_packet *packets;
     int n_packets;
-    /* The root's quads when the root is a leaf (else none), for
-     * rt_bvh_hit4: the axis-aligned ones, then the others. */
-    rt_quad_axis *root_axis;
-    int n_root_axis;
-    rt_quad_lanes *root_quads;
-    int n_root_quads;
+    /* The root leaf laid out for rt_bvh_hit4 (render/bvh4.h), NULL when
+     * the root is not a leaf. */
+    struct rt_bvh4 *root4;
 } rt_bvh;
 
 /* Builds the hierarchy over prims[0..n) (n >= 1), reordering the array so
@@ -122,13 +97,14 @@ bool rt_bvh_hit(const rt_bvh *bvh, const rt_prim *prims, const rt_ray *r, double
 
 /* rt_bvh_hit for RT_BVH_LANES rays at once: h[k] is filled in for every
  * ray r[k] that meets a primitive in (tmin, tmax), and bit k of the result
- * is set for it. Each ray gets the same distance and hit record as from
- * rt_bvh_hit (on an exact tie between two primitives either may be
- * reported). For a tree whose root is a leaf (a small scene such as the
- * Cornell box), processors with AVX2 test each primitive against the four
- * rays in one vector instruction, four independent computations where a
- * single ray's test is one long dependent chain; otherwise the rays are
- * traced one by one. Callers with fewer rays repeat one of them. */
+ * is set for it; h[k] of a ray that meets nothing may be overwritten.
+ * Each ray gets the same distance and hit record as from rt_bvh_hit (on
+ * an exact tie between two primitives either may be reported). For a tree
+ * whose root is a leaf (a small scene such as the Cornell box), processors
+ * with AVX2 (or AVX-512, with mask registers) test each primitive against
+ * the four rays in one vector instruction, four independent computations where a single ray's test is
+ * one long dependent chain; otherwise the rays are traced one by one.
+ * Callers with fewer rays repeat one of them. */
 unsigned rt_bvh_hit4(const rt_bvh *bvh, const rt_prim *prims, const rt_ray r[RT_BVH_LANES],
                      double tmin, double tmax, rt_hit h[RT_BVH_LANES]);
 

@@ -9,6 +9,7 @@
 #include "mc/constants.h"
 #include "mc/rng.h"
 #include "render/bvh.h"
+#include "render/bvh4.h"
 #include "render/camera.h"
 #include "render/scene.h"
 #include "render/scenes.h"
@@ -183,7 +184,9 @@ static rt_ray axis_ray(mc_rng *rng, vec3 lo, vec3 hi)
     return rt_ray_make(v3(o[0], o[1], o[2]), vec3_normalize(v3(c[0], c[1], c[2])));
 }
 
-static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed)
+/* rt_bvh4_hit with instruction set isa (rt_bvh_hit4 itself for
+ * RT_BVH4_SCALAR + the best: the public entry) against rt_bvh_hit. */
+static int check_hit4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed, int isa)
 {
     mc_rng rng = mc_rng_derive(seed, 0u);
     const rt_prim *prims = rt_scene_prims(s);
@@ -194,7 +197,9 @@ static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64
         rt_hit h4[RT_BVH_LANES];
         for (int k = 0; k < RT_BVH_LANES; k++)
             r[k] = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
-        unsigned mask = rt_bvh_hit4(b, prims, r, 1e-3, HUGE_VAL, h4);
+        unsigned mask = isa > (int)RT_BVH4_AVX512
+                            ? rt_bvh_hit4(b, prims, r, 1e-3, HUGE_VAL, h4)
+                            : rt_bvh4_hit((rt_bvh4_isa)isa, b, prims, r, 1e-3, HUGE_VAL, h4);
         for (int k = 0; k < RT_BVH_LANES; k++) {
             rt_hit h1;
             bool hit = rt_bvh_hit(b, prims, &r[k], 1e-3, HUGE_VAL, &h1);
@@ -217,6 +222,17 @@ static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64
             assert_int_equal(h4[k].material, h1.material);
         }
     }
+    return hits;
+}
+
+/* check_hit4_isa through the public rt_bvh_hit4 (the processor's best
+ * instruction set), then every instruction set below the best on a fifth
+ * of the rays: so the AVX2 path stays tested on a processor with AVX-512. */
+static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed)
+{
+    int hits = check_hit4_isa(s, n_batches, lo, hi, seed, (int)RT_BVH4_AVX512 + 1);
+    for (int isa = RT_BVH4_SCALAR; isa < (int)rt_bvh4_isa_best(); isa++)
+        check_hit4_isa(s, n_batches / 5, lo, hi, seed + 100u, isa);
     return hits;
 }
 
@@ -251,6 +267,34 @@ static void test_bvh_hit4_matches_hit(void **state)
     hits = check_hit4(s, 20000, v3(-20, -20, -20), v3(120, 120, 120), 18u);
     printf("rt_bvh_hit4 = rt_bvh_hit on 1.2 x 10^6 + 8 x 10^4 rays (%d hits in the soup)\n", hits);
     assert_true(hits > 8000);
+    rt_scene_destroy(s);
+}
+
+/* A root leaf with a quad of every layout of bvh4.h: axis-aligned, turned
+ * about x (its ea along x: a and b swapped) and about z, flat in a z
+ * plane, in general position; a sphere and an inward one around it all.
+ * 2 x 10^4 batches through the public entry and each instruction set. */
+static void test_bvh_hit4_quad_kinds(void **state)
+{
+    (void)state;
+    rt_scene *s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    rt_scene_add(s, rt_scene_quad(s, v3(0, 0, 0), v3(100, 0, 0), v3(0, 0, 100), m));
+    rt_scene_add(s, rt_scene_quad(s, v3(10, 10, 10), v3(20, 0, 0), v3(0, 30, 40), m));
+    rt_scene_add(s, rt_scene_quad(s, v3(20, 50, 30), v3(20, 15, 0), v3(0, 0, 25), m));
+    rt_scene_add(s, rt_scene_quad(s, v3(50, 20, 80), v3(30, 10, 0), v3(-10, 25, 0), m));
+    rt_scene_add(s, rt_scene_quad(s, v3(30, 30, 30), v3(10, 20, 30), v3(-20, 10, 5), m));
+    rt_scene_add(s, rt_scene_sphere(s, v3(60, 60, 60), 15.0, m));
+    rt_scene_add(s, rt_scene_flip(s, rt_scene_sphere(s, v3(50, 50, 50), 200.0, m)));
+    assert_int_equal(rt_scene_build(s), 0);
+    const rt_bvh4 *b4 = rt_scene_bvh(s)->root4;
+    assert_non_null(b4);
+    assert_int_equal(b4->n_axis, 1);
+    assert_int_equal(b4->n_turned, 2);
+    assert_int_equal(b4->n_flat, 1);
+    assert_int_equal(b4->n_other, 1);
+    int hits = check_hit4(s, 20000, v3(-20, -20, -20), v3(120, 120, 120), 21u);
+    assert_true(hits == 4 * 20000); /* the inward sphere catches every ray */
     rt_scene_destroy(s);
 }
 
@@ -353,6 +397,7 @@ int main(void)
         cmocka_unit_test(test_instances_flattened_match_tree),
         cmocka_unit_test(test_bvh_matches_brute_force),
         cmocka_unit_test(test_bvh_hit4_matches_hit),
+        cmocka_unit_test(test_bvh_hit4_quad_kinds),
         cmocka_unit_test(test_bvh_degenerate_inputs),
         cmocka_unit_test(test_camera_geometry),
         cmocka_unit_test(test_scene_errors),

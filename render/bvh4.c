@@ -1,0 +1,457 @@
+/* render/bvh4.c - a root leaf against four rays at once (rt_bvh_hit4). */
+#include "render/bvh4.h"
+
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The index of the only nonzero (or NaN) coordinate of (x, y, z), -1 if
+ * there is not exactly one. */
+static int single_axis(const double v[3])
+{
+    int nonzero = (v[0] != 0.0) + (v[1] != 0.0) + (v[2] != 0.0);
+    return nonzero != 1 ? -1 : v[0] != 0.0 ? 0 : v[1] != 0.0 ? 1 : 2;
+}
+
+/* The axis j of a quad turned about a coordinate axis (rt_quad_turned):
+ * n_j = 0 with the other two coordinates of n nonzero, one dual edge
+ * vector along j and the other zero at j, nonzero at i and k. *swap says
+ * that ea is the one along j. -1 for a quad of another kind. */
+static int turned_axis(const double n[3], const double ea[3], const double eb[3], bool *swap)
+{
+    for (int j = 0; j < 3; j++) {
+        int i = j == 0 ? 1 : 0, k = j == 2 ? 1 : 2;
+        if (n[j] != 0.0 || n[i] == 0.0 || n[k] == 0.0)
+            continue;
+        *swap = single_axis(ea) == j;
+        const double *a = *swap ? eb : ea, *b = *swap ? ea : eb;
+        if (single_axis(b) == j && a[j] == 0.0 && a[i] != 0.0 && a[k] != 0.0)
+            return j;
+    }
+    return -1;
+}
+
+#define EACH_LANE for (int l = 0; l < RT_BVH_LANES; l++)
+
+/* Appends quad s (prims[prim]) to the layout of its kind. The edge test
+ * is symmetric in a and b, so a turned quad may swap them. */
+static void lay_out_quad(rt_bvh4 *b4, const rt_quad *s, int64_t prim)
+{
+    const double n[3] = {s->normal.x, s->normal.y, s->normal.z}, o[3] = {s->q.x, s->q.y, s->q.z};
+    const double ea[3] = {s->ea.x, s->ea.y, s->ea.z}, eb[3] = {s->eb.x, s->eb.y, s->eb.z};
+    int k = single_axis(n), ia = single_axis(ea), ib = single_axis(eb);
+    bool swap = false;
+    int tj = turned_axis(n, ea, eb, &swap);
+    if (k >= 0 && ia >= 0 && ib >= 0) {
+        rt_quad_axis *w = &b4->axis[b4->n_axis++];
+        w->k = k, w->i = ia, w->j = ib;
+        EACH_LANE w->n[l] = n[k], w->plane[l] = s->plane, w->qi[l] = o[ia], w->qj[l] = o[ib],
+              w->ea[l] = ea[ia], w->eb[l] = eb[ib], w->prim[l] = prim;
+    } else if (k >= 0 && ea[k] == 0.0 && eb[k] == 0.0) {
+        rt_quad_flat *w = &b4->flat[b4->n_flat++];
+        int i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+        w->k = k, w->i = i, w->j = j;
+        EACH_LANE w->n[l] = n[k], w->plane[l] = s->plane, w->qi[l] = o[i], w->qj[l] = o[j],
+              w->ai[l] = ea[i], w->aj[l] = ea[j], w->bi[l] = eb[i], w->bj[l] = eb[j], w->prim[l] = prim;
+    } else if (tj >= 0) {
+        rt_quad_turned *w = &b4->turned[b4->n_turned++];
+        const double *a = swap ? eb : ea, *b = swap ? ea : eb;
+        int i = tj == 0 ? 1 : 0, kk = tj == 2 ? 1 : 2;
+        w->i = i, w->j = tj, w->k = kk;
+        EACH_LANE w->ni[l] = n[i], w->nk[l] = n[kk], w->plane[l] = s->plane, w->qi[l] = o[i],
+              w->qj[l] = o[tj], w->qk[l] = o[kk], w->ai[l] = a[i], w->ak[l] = a[kk], w->bj[l] = b[tj],
+              w->prim[l] = prim;
+    } else {
+        const double f[13] = {n[0], n[1], n[2], s->plane, o[0], o[1], o[2],
+                              ea[0], ea[1], ea[2], eb[0], eb[1], eb[2]};
+        rt_quad_lanes *w = &b4->other[b4->n_other++];
+        EACH_LANE {
+            for (int g = 0; g < 13; g++)
+                w->f[g][l] = f[g];
+            w->prim[l] = prim;
+        }
+    }
+}
+
+rt_bvh4 *rt_bvh4_create(const rt_prim *prims, int n, int n_quads)
+{
+    _Static_assert(sizeof(rt_quad_axis) % 64 == 0 && sizeof(rt_quad_lanes) % 64 == 0 &&
+                       sizeof(rt_quad_flat) % 64 == 0 && sizeof(rt_quad_turned) % 64 == 0,
+                   "rows of 32-byte lanes stay aligned from one quad to the next");
+    rt_bvh4 *b4 = calloc(1, sizeof *b4);
+    if (!b4)
+        return NULL;
+    /* Sizes rounded up to the alignment, as aligned_alloc wants. */
+    size_t nq = (size_t)(n_quads > 0 ? n_quads : 1), rows = ((size_t)n + 1) / 2 * 2;
+    b4->axis = aligned_alloc(64, nq * sizeof *b4->axis);
+    b4->turned = aligned_alloc(64, nq * sizeof *b4->turned);
+    b4->flat = aligned_alloc(64, nq * sizeof *b4->flat);
+    b4->other = aligned_alloc(64, nq * sizeof *b4->other);
+    b4->rows = aligned_alloc(64, rows * sizeof *b4->rows);
+    if (!b4->axis || !b4->turned || !b4->flat || !b4->other || !b4->rows) {
+        rt_bvh4_destroy(b4);
+        return NULL;
+    }
+    memset(b4->axis, 0, nq * sizeof *b4->axis);
+    memset(b4->turned, 0, nq * sizeof *b4->turned);
+    memset(b4->flat, 0, nq * sizeof *b4->flat);
+    b4->n = n, b4->n_quads = n_quads;
+    for (int i = 0; i < n; i++) {
+        if (i < n_quads) {
+            const rt_quad *s = &prims[i].as.quad;
+            lay_out_quad(b4, s, i);
+            memcpy(b4->rows[i], (const double[4]){s->normal.x, s->normal.y, s->normal.z, 0.0},
+                   sizeof b4->rows[i]);
+        } else {
+            const rt_sphere *s = &prims[i].as.sphere;
+            memcpy(b4->rows[i], (const double[4]){s->center.x, s->center.y, s->center.z, s->orient},
+                   sizeof b4->rows[i]);
+        }
+    }
+    return b4;
+}
+
+void rt_bvh4_destroy(rt_bvh4 *b4)
+{
+    if (!b4)
+        return;
+    free(b4->axis);
+    free(b4->turned);
+    free(b4->flat);
+    free(b4->other);
+    free(b4->rows);
+    free(b4);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define RT_BVH4_X86 1
+#include <immintrin.h>
+
+/* Exactness. Every lane computes rt_quad_t's and rt_sphere_t's
+ * expressions in the same order, without FMA (a fused multiply-add rounds
+ * once where the scalar code rounds twice; neither target below enables
+ * it), so that its distance is the scalar one bit for bit. The layouts
+ * of bvh4.h leave out terms of rt_quad_t's dot products whose factor from
+ * the quad is exactly zero: such a term is a zero times a finite number,
+ * a signed zero, and adding a signed zero leaves a nonzero sum unchanged
+ * and a zero sum zero, at most of the other sign. No decision sees that
+ * sign: a zero n . d gives t = +-inf or NaN either way, which the range
+ * test rejects; a zero n . o makes t = +-0 or the same nonzero t, and the
+ * fast path runs only for tmin >= 0, which rejects both zeros; -0 passes
+ * a >= 0 as +0 does. The factors from the ray are finite as needed: d and
+ * o are; t is where it passes the range test; and a coordinate of
+ * h = o + t d - q left out of both edge dot products is along an axial
+ * normal n_k = +-1 (to rounding), where t d_k = (plane - n_k o_k) / n_k to
+ * rounding, as large as the scene's coordinates. Every other coordinate
+ * of h meets a nonzero factor in a or b, so an infinite or NaN one makes
+ * that sum infinite or NaN and the edge test fails, as in rt_quad_t. */
+
+/* The four rays, coordinate by coordinate. */
+typedef struct lanes {
+    __m256d o[3], d[3];
+} lanes;
+
+/* Each lane's nearest hit so far: its distance (tmax at first) and the
+ * primitive's index (-1 at first), as a double's bits for the blends. */
+typedef struct nearest {
+    __m256d t, i;
+} nearest;
+
+#define AVX2 __attribute__((target("avx2"), always_inline)) static inline
+#define LOAD(x) _mm256_load_pd(x)
+#define ADD _mm256_add_pd
+#define SUB _mm256_sub_pd
+#define MUL _mm256_mul_pd
+
+/* (o + t d)_c - q_c: a coordinate of h in rt_quad_t. */
+AVX2 __m256d h_at(const lanes *L, __m256d t, int c, const double *q)
+{
+    return SUB(ADD(L->o[c], MUL(t, L->d[c])), LOAD(q));
+}
+
+AVX2 __m256d quad_axis(const lanes *L, const rt_quad_axis *w, __m256d *a, __m256d *b)
+{
+    __m256d n = LOAD(w->n);
+    __m256d t = _mm256_div_pd(SUB(LOAD(w->plane), MUL(n, L->o[w->k])), MUL(n, L->d[w->k]));
+    *a = MUL(h_at(L, t, w->i, w->qi), LOAD(w->ea));
+    *b = MUL(h_at(L, t, w->j, w->qj), LOAD(w->eb));
+    return t;
+}
+
+/* Two terms are added in either order to the same bits. */
+AVX2 __m256d quad_turned(const lanes *L, const rt_quad_turned *w, __m256d *a, __m256d *b)
+{
+    __m256d ni = LOAD(w->ni), nk = LOAD(w->nk);
+    __m256d dn = ADD(MUL(ni, L->d[w->i]), MUL(nk, L->d[w->k]));
+    __m256d on = ADD(MUL(ni, L->o[w->i]), MUL(nk, L->o[w->k]));
+    __m256d t = _mm256_div_pd(SUB(LOAD(w->plane), on), dn);
+    __m256d hi = h_at(L, t, w->i, w->qi), hk = h_at(L, t, w->k, w->qk);
+    *a = ADD(MUL(hi, LOAD(w->ai)), MUL(hk, LOAD(w->ak)));
+    *b = MUL(h_at(L, t, w->j, w->qj), LOAD(w->bj));
+    return t;
+}
+
+AVX2 __m256d quad_flat(const lanes *L, const rt_quad_flat *w, __m256d *a, __m256d *b)
+{
+    __m256d n = LOAD(w->n);
+    __m256d t = _mm256_div_pd(SUB(LOAD(w->plane), MUL(n, L->o[w->k])), MUL(n, L->d[w->k]));
+    __m256d hi = h_at(L, t, w->i, w->qi), hj = h_at(L, t, w->j, w->qj);
+    *a = ADD(MUL(hi, LOAD(w->ai)), MUL(hj, LOAD(w->aj)));
+    *b = ADD(MUL(hi, LOAD(w->bi)), MUL(hj, LOAD(w->bj)));
+    return t;
+}
+
+/* rt_quad_t in full; q->f in rt_quad_packet's order. */
+AVX2 __m256d quad_other(const lanes *L, const rt_quad_lanes *q, __m256d *a, __m256d *b)
+{
+    const __m256d *o = L->o, *d = L->d;
+    __m256d dn = ADD(ADD(MUL(LOAD(q->f[0]), d[0]), MUL(LOAD(q->f[1]), d[1])), MUL(LOAD(q->f[2]), d[2]));
+    __m256d on = ADD(ADD(MUL(LOAD(q->f[0]), o[0]), MUL(LOAD(q->f[1]), o[1])), MUL(LOAD(q->f[2]), o[2]));
+    __m256d t = _mm256_div_pd(SUB(LOAD(q->f[3]), on), dn);
+    __m256d hx = h_at(L, t, 0, q->f[4]), hy = h_at(L, t, 1, q->f[5]), hz = h_at(L, t, 2, q->f[6]);
+    *a = ADD(ADD(MUL(hx, LOAD(q->f[7])), MUL(hy, LOAD(q->f[8]))), MUL(hz, LOAD(q->f[9])));
+    *b = ADD(ADD(MUL(hx, LOAD(q->f[10])), MUL(hy, LOAD(q->f[11]))), MUL(hz, LOAD(q->f[12])));
+    return t;
+}
+
+/* rt_sphere_t: the nearer root if it is beyond tmin, else the farther
+ * (t1 = h - sq <= h + sq = t2 also in floating point); *disc gets the
+ * discriminant, whose sign says whether the roots are real. */
+AVX2 __m256d sphere(const lanes *L, const rt_sphere *s, __m256d lo, __m256d *disc)
+{
+    __m256d cx = SUB(_mm256_set1_pd(s->center.x), L->o[0]), cy = SUB(_mm256_set1_pd(s->center.y), L->o[1]),
+            cz = SUB(_mm256_set1_pd(s->center.z), L->o[2]);
+    __m256d h = ADD(ADD(MUL(L->d[0], cx), MUL(L->d[1], cy)), MUL(L->d[2], cz));
+    __m256d c = SUB(ADD(ADD(MUL(cx, cx), MUL(cy, cy)), MUL(cz, cz)), _mm256_set1_pd(s->radius * s->radius));
+    *disc = SUB(MUL(h, h), c);
+    __m256d sq = _mm256_sqrt_pd(_mm256_max_pd(*disc, _mm256_setzero_pd())); /* max: 0 for a NaN */
+    __m256d t1 = SUB(h, sq), t2 = ADD(h, sq);
+    return _mm256_blendv_pd(t2, t1, _mm256_cmp_pd(t1, lo, _CMP_GT_OQ));
+}
+
+/* Keeps t where the lanes of `in` (t > tmin, the point inside) are nearer
+ * than the best so far: t < best, the last condition of rt_quad_t, is
+ * left to a minimum, so that the chain from one primitive to the next is
+ * that one instruction. min(x, y) is x < y ? x : y, which keeps y on a
+ * tie as rt_quad_t's strict t < tmax does. */
+AVX2 void keep(nearest *nb, __m256d t, __m256d in, __m256d prim)
+{
+    __m256d tm = _mm256_blendv_pd(_mm256_set1_pd(HUGE_VAL), t, in);
+    nb->i = _mm256_blendv_pd(nb->i, prim, _mm256_cmp_pd(tm, nb->t, _CMP_LT_OQ));
+    nb->t = _mm256_min_pd(tm, nb->t);
+}
+
+/* The lanes with t > lo and a, b in [0, 1], by vector masks. */
+AVX2 __m256d inside(__m256d t, __m256d a, __m256d b, __m256d lo)
+{
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    __m256d in = _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_GE_OQ), _mm256_cmp_pd(a, one, _CMP_LE_OQ));
+    in = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_GE_OQ),
+                                          _mm256_cmp_pd(b, one, _CMP_LE_OQ)));
+    return _mm256_and_pd(in, _mm256_cmp_pd(t, lo, _CMP_GT_OQ));
+}
+
+/* The rays r[0..3] as lanes: a 4 x 4 transpose of (o, d.x) and a 4 x 2
+ * one of (d.y, d.z). */
+AVX2 lanes load_rays(const rt_ray r[RT_BVH_LANES])
+{
+    _Static_assert(sizeof(rt_ray) == 6 * sizeof(double), "rt_ray is o then d, packed");
+    const double *p = (const double *)(const void *)r;
+    __m256d r0 = _mm256_loadu_pd(p), r1 = _mm256_loadu_pd(p + 6), r2 = _mm256_loadu_pd(p + 12),
+            r3 = _mm256_loadu_pd(p + 18);
+    __m256d e0 = _mm256_unpacklo_pd(r0, r1), e1 = _mm256_unpackhi_pd(r0, r1); /* x0 x1 z0 z1, ... */
+    __m256d e2 = _mm256_unpacklo_pd(r2, r3), e3 = _mm256_unpackhi_pd(r2, r3);
+    __m256d yz02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p + 4)),
+                                        _mm_loadu_pd(p + 16), 1);
+    __m256d yz13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p + 10)),
+                                        _mm_loadu_pd(p + 22), 1);
+    lanes L = {{_mm256_permute2f128_pd(e0, e2, 0x20), _mm256_permute2f128_pd(e1, e3, 0x20),
+                _mm256_permute2f128_pd(e0, e2, 0x31)},
+               {_mm256_permute2f128_pd(e1, e3, 0x31), _mm256_unpacklo_pd(yz02, yz13),
+                _mm256_unpackhi_pd(yz02, yz13)}};
+    return L;
+}
+
+/* The 4 x 4 transpose: row k of the result is lane k of c0..c3. */
+AVX2 void transpose(__m256d c0, __m256d c1, __m256d c2, __m256d c3, __m256d row[4])
+{
+    __m256d e0 = _mm256_unpacklo_pd(c0, c1), e1 = _mm256_unpackhi_pd(c0, c1);
+    __m256d e2 = _mm256_unpacklo_pd(c2, c3), e3 = _mm256_unpackhi_pd(c2, c3);
+    row[0] = _mm256_permute2f128_pd(e0, e2, 0x20), row[1] = _mm256_permute2f128_pd(e1, e3, 0x20);
+    row[2] = _mm256_permute2f128_pd(e0, e2, 0x31), row[3] = _mm256_permute2f128_pd(e1, e3, 0x31);
+}
+
+/* A sphere's outward normal: rt_prim_hit_record's
+ * orient (normalize(p - c)), normalize(v) being v (1 / sqrt(v . v)). */
+AVX2 void sphere_outward(const __m256d p[3], const __m256d c[3], __m256d orient, __m256d out[3])
+{
+    __m256d v[3] = {SUB(p[0], c[0]), SUB(p[1], c[1]), SUB(p[2], c[2])};
+    __m256d len2 = ADD(ADD(MUL(v[0], v[0]), MUL(v[1], v[1])), MUL(v[2], v[2]));
+    __m256d s = _mm256_div_pd(_mm256_set1_pd(1.0), _mm256_sqrt_pd(len2));
+    for (int k = 0; k < 3; k++)
+        out[k] = MUL(orient, MUL(s, v[k]));
+}
+
+/* rt_prim_hit_record for the four lanes at once, from each primitive's
+ * row (a quad's normal, or a sphere's centre and orient): the point, the
+ * outward normal, rt_hit_set_face's side test and flip, lane by lane in
+ * the scalar code's order. A lane that missed gets primitive 0's record,
+ * which the caller may not read. */
+AVX2 unsigned records(const rt_bvh4 *b4, const rt_prim *prims, const lanes *L, nearest nb,
+                      rt_hit h[RT_BVH_LANES])
+{
+    _Static_assert(offsetof(rt_hit, t) == 0 && offsetof(rt_hit, p) == 8 && offsetof(rt_hit, normal) == 32 &&
+                       offsetof(rt_hit, front_face) >= 56 && offsetof(rt_hit, material) >= 56 &&
+                       offsetof(rt_hit, prim) >= 56,
+                   "t, p and normal are the first 7 doubles of rt_hit, the rest follows");
+    __m256i hit = _mm256_cmpgt_epi64(_mm256_castpd_si256(nb.i), _mm256_set1_epi64x(-1));
+    int64_t is[RT_BVH_LANES];
+    _mm256_storeu_si256((__m256i *)(void *)is, _mm256_and_si256(_mm256_castpd_si256(nb.i), hit));
+    const double *w0 = b4->rows[is[0]], *w1 = b4->rows[is[1]], *w2 = b4->rows[is[2]], *w3 = b4->rows[is[3]];
+    __m256d a = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_load_pd(w0)), _mm_load_pd(w2), 1);
+    __m256d b = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_load_pd(w1)), _mm_load_pd(w3), 1);
+    __m256d c = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_load_pd(w0 + 2)), _mm_load_pd(w2 + 2), 1);
+    __m256d d = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_load_pd(w1 + 2)), _mm_load_pd(w3 + 2), 1);
+    __m256d out[3] = {_mm256_unpacklo_pd(a, b), _mm256_unpackhi_pd(a, b), _mm256_unpacklo_pd(c, d)};
+    __m256d orient = _mm256_unpackhi_pd(c, d), p[3];
+    for (int k = 0; k < 3; k++)
+        p[k] = ADD(L->o[k], MUL(nb.t, L->d[k]));
+    /* Spheres are a few percent of the hits: their square root and
+     * division only where a lane has one, a well-predicted branch. */
+    __m256d sph = _mm256_cmp_pd(orient, _mm256_setzero_pd(), _CMP_NEQ_OQ);
+    if (_mm256_movemask_pd(sph)) {
+        __m256d s[3];
+        sphere_outward(p, out, orient, s);
+        for (int k = 0; k < 3; k++)
+            out[k] = _mm256_blendv_pd(out[k], s[k], sph);
+    }
+    __m256d f = ADD(ADD(MUL(L->d[0], out[0]), MUL(L->d[1], out[1])), MUL(L->d[2], out[2]));
+    __m256d front = _mm256_cmp_pd(f, _mm256_setzero_pd(), _CMP_LT_OQ);
+    __m256d flip = _mm256_andnot_pd(front, _mm256_set1_pd(-0.0)), tp[4], nr[4];
+    transpose(nb.t, p[0], p[1], p[2], tp);
+    transpose(_mm256_xor_pd(out[0], flip), _mm256_xor_pd(out[1], flip), _mm256_xor_pd(out[2], flip),
+              flip, nr);
+    unsigned fb = (unsigned)_mm256_movemask_pd(front);
+    for (int k = 0; k < RT_BVH_LANES; k++) {
+        char *hk = (char *)(void *)&h[k];
+        _mm256_storeu_pd((double *)(void *)hk, tp[k]);
+        _mm256_storeu_pd((double *)(void *)(hk + offsetof(rt_hit, normal)), nr[k]);
+        h[k].front_face = (fb >> k) & 1u;
+        h[k].material = prims[is[k]].material;
+        h[k].prim = (int)is[k];
+    }
+    return (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(hit));
+}
+
+#define PRIM(w) _mm256_load_pd((const double *)(const void *)(w).prim)
+/* Every quad of one kind: its distances, then INSIDE and KEEP. */
+#define QUADS(n, kind, test, INSIDE, KEEP)                                                          \
+    for (int q = 0; q < b4->n; q++) {                                                                \
+        __m256d a, b, t = test(&L, &b4->kind[q], &a, &b);                                            \
+        KEEP(&nb, t, INSIDE(t, a, b, lo), PRIM(b4->kind[q]));                                        \
+    }
+
+/* The root leaf against the four rays, each lane keeping its nearest
+ * hit; then the records. */
+__attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, const rt_prim *prims,
+                                                         const rt_ray r[RT_BVH_LANES], double tmin,
+                                                         double tmax, rt_hit h[RT_BVH_LANES])
+{
+    lanes L = load_rays(r);
+    const __m256d lo = _mm256_set1_pd(tmin);
+    nearest nb = {_mm256_set1_pd(tmax), _mm256_castsi256_pd(_mm256_set1_epi64x(-1))};
+    QUADS(n_axis, axis, quad_axis, inside, keep)
+    QUADS(n_turned, turned, quad_turned, inside, keep)
+    QUADS(n_flat, flat, quad_flat, inside, keep)
+    QUADS(n_other, other, quad_other, inside, keep)
+    for (int i = b4->n_quads; i < b4->n; i++) {
+        __m256d disc, t = sphere(&L, &prims[i].as.sphere, lo, &disc);
+        __m256d in = _mm256_and_pd(_mm256_cmp_pd(disc, _mm256_setzero_pd(), _CMP_GE_OQ),
+                                   _mm256_cmp_pd(t, lo, _CMP_GT_OQ));
+        keep(&nb, t, in, _mm256_castsi256_pd(_mm256_set1_epi64x(i)));
+    }
+    return records(b4, prims, &L, nb, h);
+}
+
+/* The same with AVX-512's mask registers (still four lanes of 256 bits,
+ * the same arithmetic): each comparison is masked by the previous ones,
+ * which makes the conjunction without vector ANDs, and the blends read
+ * the mask. Processors with AVX-512 have FMA, but only explicit FMA
+ * intrinsics would use it here: GCC's avx512f target does not enable
+ * FMA, and clang contracts a * b + c only within one C expression, which
+ * the intrinsics never are. */
+#define AVX512 __attribute__((target("avx2,avx512f,avx512vl"), always_inline)) static inline
+
+AVX512 __mmask8 inside512(__m256d t, __m256d a, __m256d b, __m256d lo)
+{
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    __mmask8 in = _mm256_cmp_pd_mask(a, zero, _CMP_GE_OQ);
+    in = _mm256_mask_cmp_pd_mask(in, a, one, _CMP_LE_OQ);
+    in = _mm256_mask_cmp_pd_mask(in, b, zero, _CMP_GE_OQ);
+    in = _mm256_mask_cmp_pd_mask(in, b, one, _CMP_LE_OQ);
+    return _mm256_mask_cmp_pd_mask(in, t, lo, _CMP_GT_OQ);
+}
+
+/* keep with masks. */
+AVX512 void keep512(nearest *nb, __m256d t, __mmask8 in, __m256d prim)
+{
+    __m256d tm = _mm256_mask_blend_pd(in, _mm256_set1_pd(HUGE_VAL), t);
+    nb->i = _mm256_mask_blend_pd(_mm256_cmp_pd_mask(tm, nb->t, _CMP_LT_OQ), nb->i, prim);
+    nb->t = _mm256_min_pd(tm, nb->t);
+}
+
+__attribute__((target("avx2,avx512f,avx512vl"))) static unsigned
+hit4_avx512(const rt_bvh4 *b4, const rt_prim *prims, const rt_ray r[RT_BVH_LANES], double tmin,
+            double tmax, rt_hit h[RT_BVH_LANES])
+{
+    lanes L = load_rays(r);
+    const __m256d lo = _mm256_set1_pd(tmin);
+    nearest nb = {_mm256_set1_pd(tmax), _mm256_castsi256_pd(_mm256_set1_epi64x(-1))};
+    QUADS(n_axis, axis, quad_axis, inside512, keep512)
+    QUADS(n_turned, turned, quad_turned, inside512, keep512)
+    QUADS(n_flat, flat, quad_flat, inside512, keep512)
+    QUADS(n_other, other, quad_other, inside512, keep512)
+    for (int i = b4->n_quads; i < b4->n; i++) {
+        __m256d disc, t = sphere(&L, &prims[i].as.sphere, lo, &disc);
+        __mmask8 in = _mm256_mask_cmp_pd_mask(_mm256_cmp_pd_mask(disc, _mm256_setzero_pd(), _CMP_GE_OQ),
+                                              t, lo, _CMP_GT_OQ);
+        keep512(&nb, t, in, _mm256_castsi256_pd(_mm256_set1_epi64x(i)));
+    }
+    return records(b4, prims, &L, nb, h);
+}
+#endif
+
+rt_bvh4_isa rt_bvh4_isa_best(void)
+{
+#ifdef RT_BVH4_X86
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl"))
+        return RT_BVH4_AVX512;
+    if (__builtin_cpu_supports("avx2"))
+        return RT_BVH4_AVX2;
+#endif
+    return RT_BVH4_SCALAR;
+}
+
+unsigned rt_bvh4_hit(rt_bvh4_isa isa, const rt_bvh *bvh, const rt_prim *prims,
+                     const rt_ray r[RT_BVH_LANES], double tmin, double tmax, rt_hit h[RT_BVH_LANES])
+{
+#ifdef RT_BVH4_X86
+    /* tmin >= 0: see "Exactness" above. */
+    if (bvh->root4 && tmin >= 0.0 && isa == RT_BVH4_AVX512)
+        return hit4_avx512(bvh->root4, prims, r, tmin, tmax, h);
+    if (bvh->root4 && tmin >= 0.0 && isa == RT_BVH4_AVX2)
+        return hit4_avx2(bvh->root4, prims, r, tmin, tmax, h);
+#else
+    (void)isa;
+#endif
+    unsigned mask = 0;
+    for (int k = 0; k < RT_BVH_LANES; k++)
+        mask |= (unsigned)rt_bvh_hit(bvh, prims, &r[k], tmin, tmax, &h[k]) << k;
+    return mask;
+}
+
+unsigned rt_bvh_hit4(const rt_bvh *bvh, const rt_prim *prims, const rt_ray r[RT_BVH_LANES],
+                     double tmin, double tmax, rt_hit h[RT_BVH_LANES])
+{
+    return rt_bvh4_hit(rt_bvh4_isa_best(), bvh, prims, r, tmin, tmax, h);
+}
