@@ -45,9 +45,10 @@ void mc_jitter_2d(mc_rng *rng, size_t n, double *xy)
             xy[2 * k + 1] = ((double)j + mc_rng_uniform(rng)) * inv_y;
         }
     }
-    for (; k < n; k++) {
-        xy[2 * k] = mc_rng_uniform(rng);
-        xy[2 * k + 1] = mc_rng_uniform(rng);
+    /* The n - sx sy points beyond the grid, uniform. */
+    for (double *p = xy + 2 * k; p < xy + 2 * n; p += 2) {
+        p[0] = mc_rng_uniform(rng);
+        p[1] = mc_rng_uniform(rng);
     }
     for (k = 0; k < 2 * n; k++)
         xy[k] = below_one(xy[k]);
