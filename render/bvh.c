@@ -406,21 +406,23 @@ __attribute__((target("avx2"))) static inline void packets_closest_avx2(
 /* rt_sphere_t's arithmetic in scalar SSE: the same numbers, with selects
  * where the compiler makes branches of the C version's conditions. Since
  * t1 = h - sq <= h + sq = t2 also in floating point, the nearer valid root
- * is t1 if t1 > tmin, else t2, kept if it is below tmax. */
+ * is t1 if t1 > tmin, else t2, kept if it is below tmax. Only lane 0
+ * is read; the values are broadcast rather than set with _mm_set_sd,
+ * whose register-to-register vmovq valgrind 3.19 cannot decode. */
 __attribute__((target("avx2"))) static inline double sphere_t_avx2(const rt_sphere *s, rt_ray r,
                                                                     double tmin, double tmax)
 {
     vec3 oc = vec3_sub(s->center, r.origin);
     double h = vec3_dot(r.dir, oc);
     double c = vec3_length_sq(oc) - s->radius * s->radius;
-    __m128d disc = _mm_set_sd(h * h - c), zero = _mm_setzero_pd(), hv = _mm_set_sd(h);
+    __m128d disc = _mm_set1_pd(h * h - c), zero = _mm_setzero_pd(), hv = _mm_set1_pd(h);
     __m128d sq = _mm_sqrt_sd(zero, _mm_max_sd(disc, zero)); /* max gives 0 for a NaN disc */
-    __m128d t1 = _mm_sub_sd(hv, sq), t2 = _mm_add_sd(hv, sq), lo = _mm_set_sd(tmin);
+    __m128d t1 = _mm_sub_sd(hv, sq), t2 = _mm_add_sd(hv, sq), lo = _mm_set1_pd(tmin);
     __m128d t = _mm_blendv_pd(t2, t1, _mm_cmp_sd(t1, lo, _CMP_GT_OQ));
     __m128d ok = _mm_and_pd(_mm_cmp_sd(disc, zero, _CMP_GE_OQ),
                             _mm_and_pd(_mm_cmp_sd(t, lo, _CMP_GT_OQ),
-                                       _mm_cmp_sd(t, _mm_set_sd(tmax), _CMP_LT_OQ)));
-    return _mm_cvtsd_f64(_mm_blendv_pd(_mm_set_sd(HUGE_VAL), t, ok));
+                                       _mm_cmp_sd(t, _mm_set1_pd(tmax), _CMP_LT_OQ)));
+    return _mm_cvtsd_f64(_mm_blendv_pd(_mm_set1_pd(HUGE_VAL), t, ok));
 }
 #endif
 
