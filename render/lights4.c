@@ -59,14 +59,30 @@ static bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 #define RT_LIGHTS4_X86 1
 #include <immintrin.h>
 
+#define AVX2_INLINE __attribute__((target("avx2"), always_inline)) static inline
+
+/* The x, y and z of four vectors, a lane each. */
+AVX2_INLINE void lanes_of(const vec3 v[4], __m256d *x, __m256d *y, __m256d *z)
+{
+    *x = _mm256_setr_pd(v[0].x, v[1].x, v[2].x, v[3].x);
+    *y = _mm256_setr_pd(v[0].y, v[1].y, v[2].y, v[3].y);
+    *z = _mm256_setr_pd(v[0].z, v[1].z, v[2].z, v[3].z);
+}
+
+/* The list's average of the summed densities (power_of_two above). */
+AVX2_INLINE __m256d list_average(__m256d sum, int n)
+{
+    return power_of_two(n) ? _mm256_mul_pd(sum, _mm256_set1_pd(1.0 / (double)n))
+                           : _mm256_div_pd(sum, _mm256_set1_pd((double)n));
+}
+
 /* Each statement below is the vector form of the line of render/lights.h
  * (or of the sampler it calls) named in its comment; operands keep their
  * order where it matters for rounding (sums left to right). */
 __attribute__((target("avx2"))) static void prepare_avx2(rt_lights4 *at, const vec3 origin[4])
 {
-    __m256d ox = _mm256_setr_pd(origin[0].x, origin[1].x, origin[2].x, origin[3].x),
-            oy = _mm256_setr_pd(origin[0].y, origin[1].y, origin[2].y, origin[3].y),
-            oz = _mm256_setr_pd(origin[0].z, origin[1].z, origin[2].z, origin[3].z);
+    __m256d ox, oy, oz;
+    lanes_of(origin, &ox, &oy, &oz);
     _mm256_storeu_pd(at->ox, ox);
     _mm256_storeu_pd(at->oy, oy);
     _mm256_storeu_pd(at->oz, oz);
@@ -150,9 +166,8 @@ __attribute__((target("avx2"))) static inline __m256d dot3(__m256d ax, __m256d a
 __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, const vec3 d[4],
                                                        double out[4])
 {
-    __m256d dx = _mm256_setr_pd(d[0].x, d[1].x, d[2].x, d[3].x),
-            dy = _mm256_setr_pd(d[0].y, d[1].y, d[2].y, d[3].y),
-            dz = _mm256_setr_pd(d[0].z, d[1].z, d[2].z, d[3].z);
+    __m256d dx, dy, dz;
+    lanes_of(d, &dx, &dy, &dz);
     __m256d ox = _mm256_loadu_pd(at->ox), oy = _mm256_loadu_pd(at->oy), oz = _mm256_loadu_pd(at->oz);
     const __m256d zero = _mm256_setzero_pd(), lo = _mm256_set1_pd(-PDF_QUAD_EDGE_TOL),
                   hi = _mm256_set1_pd(1.0 + PDF_QUAD_EDGE_TOL);
@@ -187,10 +202,7 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
         __m256d v = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(l->inv_area), _mm256_mul_pd(r, r)), c);
         sum = _mm256_add_pd(sum, _mm256_and_pd(ok, v));
     }
-    /* the list's average */
-    __m256d avg = power_of_two(at->n) ? _mm256_mul_pd(sum, _mm256_set1_pd(1.0 / (double)at->n))
-                                      : _mm256_div_pd(sum, _mm256_set1_pd((double)at->n));
-    _mm256_storeu_pd(out, avg);
+    _mm256_storeu_pd(out, list_average(sum, at->n));
 }
 
 /* prepare_avx2 and value_avx2 with the comparisons in mask registers: a
@@ -206,9 +218,8 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
 __attribute__((target("avx2,avx512f,avx512vl"))) static void prepare_avx512(rt_lights4 *at,
                                                                           const vec3 origin[4])
 {
-    __m256d ox = _mm256_setr_pd(origin[0].x, origin[1].x, origin[2].x, origin[3].x),
-            oy = _mm256_setr_pd(origin[0].y, origin[1].y, origin[2].y, origin[3].y),
-            oz = _mm256_setr_pd(origin[0].z, origin[1].z, origin[2].z, origin[3].z);
+    __m256d ox, oy, oz;
+    lanes_of(origin, &ox, &oy, &oz);
     _mm256_storeu_pd(at->ox, ox);
     _mm256_storeu_pd(at->oy, oy);
     _mm256_storeu_pd(at->oz, oz);
@@ -249,9 +260,8 @@ __attribute__((target("avx2,avx512f,avx512vl"))) static void prepare_avx512(rt_l
 __attribute__((target("avx2,avx512f,avx512vl"))) static void value_avx512(const rt_lights4 *at,
                                                                         const vec3 d[4], double out[4])
 {
-    __m256d dx = _mm256_setr_pd(d[0].x, d[1].x, d[2].x, d[3].x),
-            dy = _mm256_setr_pd(d[0].y, d[1].y, d[2].y, d[3].y),
-            dz = _mm256_setr_pd(d[0].z, d[1].z, d[2].z, d[3].z);
+    __m256d dx, dy, dz;
+    lanes_of(d, &dx, &dy, &dz);
     __m256d ox = _mm256_loadu_pd(at->ox), oy = _mm256_loadu_pd(at->oy), oz = _mm256_loadu_pd(at->oz);
     const __m256d zero = _mm256_setzero_pd(), lo = _mm256_set1_pd(-PDF_QUAD_EDGE_TOL),
                   hi = _mm256_set1_pd(1.0 + PDF_QUAD_EDGE_TOL);
@@ -284,9 +294,7 @@ __attribute__((target("avx2,avx512f,avx512vl"))) static void value_avx512(const 
         __m256d v = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(l->inv_area), _mm256_mul_pd(r, r)), c);
         sum = _mm256_mask_add_pd(sum, ok, sum, v);
     }
-    __m256d avg = power_of_two(at->n) ? _mm256_mul_pd(sum, _mm256_set1_pd(1.0 / (double)at->n))
-                                      : _mm256_div_pd(sum, _mm256_set1_pd((double)at->n));
-    _mm256_storeu_pd(out, avg);
+    _mm256_storeu_pd(out, list_average(sum, at->n));
 }
 #endif
 
