@@ -163,6 +163,25 @@ __attribute__((target("avx2"))) static inline __m256d dot3(__m256d ax, __m256d a
     return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ax, bx), _mm256_mul_pd(ay, by)), _mm256_mul_pd(az, bz));
 }
 
+/* For cone i: d . axis, and *rim = cos_max - the rim slack. */
+AVX2_INLINE __m256d cone_dot(const rt_lights4 *at, int i, __m256d dx, __m256d dy, __m256d dz,
+                             __m256d *rim)
+{
+    *rim = _mm256_sub_pd(_mm256_loadu_pd(at->cos_max[i]), _mm256_set1_pd(PDF_CONE_RIM_TOL));
+    return dot3(dx, dy, dz, _mm256_loadu_pd(at->ax[i]), _mm256_loadu_pd(at->ay[i]),
+                _mm256_loadu_pd(at->az[i]));
+}
+
+/* rt_light_quad_value's distance r = num / denom along d, denom = normal . d. */
+AVX2_INLINE __m256d quad_r(const rt_lights4 *at, int i, __m256d dx, __m256d dy, __m256d dz,
+                           __m256d *denom)
+{
+    const rt_light *l = &at->lights[i];
+    *denom = dot3(_mm256_set1_pd(l->normal.x), _mm256_set1_pd(l->normal.y),
+                  _mm256_set1_pd(l->normal.z), dx, dy, dz);
+    return _mm256_div_pd(_mm256_loadu_pd(at->num[i]), *denom);
+}
+
 __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, const vec3 d[4],
                                                        double out[4])
 {
@@ -177,17 +196,13 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
         const rt_light *l = &at->lights[i];
         if (l->kind != RT_PRIM_QUAD) {
             /* d . axis < cos_max - rim ? 0 : cone */
-            __m256d dd = dot3(dx, dy, dz, _mm256_loadu_pd(at->ax[i]), _mm256_loadu_pd(at->ay[i]),
-                                   _mm256_loadu_pd(at->az[i]));
-            __m256d rim = _mm256_sub_pd(_mm256_loadu_pd(at->cos_max[i]), _mm256_set1_pd(PDF_CONE_RIM_TOL));
+            __m256d rim, dd = cone_dot(at, i, dx, dy, dz, &rim);
             __m256d off = _mm256_cmp_pd(dd, rim, _CMP_LT_OQ);
             sum = _mm256_add_pd(sum, _mm256_andnot_pd(off, _mm256_loadu_pd(at->cone[i])));
             continue;
         }
         /* rt_light_quad_value: denom = normal . d, r = num / denom */
-        __m256d denom = dot3(_mm256_set1_pd(l->normal.x), _mm256_set1_pd(l->normal.y),
-                                  _mm256_set1_pd(l->normal.z), dx, dy, dz);
-        __m256d r = _mm256_div_pd(_mm256_loadu_pd(at->num[i]), denom);
+        __m256d denom, r = quad_r(at, i, dx, dy, dz, &denom);
         __m256d s, t;
         quad_st(l, ox, oy, oz, dx, dy, dz, r, &s, &t);
         /* denom != 0, r > 0, s and t within the edges (ordered: NaN fails) */
@@ -270,17 +285,13 @@ __attribute__((target("avx2,avx512f,avx512vl"))) static void value_avx512(const 
     for (int i = 0; i < at->n; i++) {
         const rt_light *l = &at->lights[i];
         if (l->kind != RT_PRIM_QUAD) {
-            __m256d dd = dot3(dx, dy, dz, _mm256_loadu_pd(at->ax[i]), _mm256_loadu_pd(at->ay[i]),
-                                     _mm256_loadu_pd(at->az[i]));
-            __m256d rim = _mm256_sub_pd(_mm256_loadu_pd(at->cos_max[i]), _mm256_set1_pd(PDF_CONE_RIM_TOL));
+            __m256d rim, dd = cone_dot(at, i, dx, dy, dz, &rim);
             /* not (dd < rim), NaN included: the lanes the cone covers */
             __mmask8 on = _mm256_cmp_pd_mask(dd, rim, _CMP_NLT_UQ);
             sum = _mm256_mask_add_pd(sum, on, sum, _mm256_loadu_pd(at->cone[i]));
             continue;
         }
-        __m256d denom = dot3(_mm256_set1_pd(l->normal.x), _mm256_set1_pd(l->normal.y),
-                                    _mm256_set1_pd(l->normal.z), dx, dy, dz);
-        __m256d r = _mm256_div_pd(_mm256_loadu_pd(at->num[i]), denom);
+        __m256d denom, r = quad_r(at, i, dx, dy, dz, &denom);
         __m256d s, t;
         quad_st(l, ox, oy, oz, dx, dy, dz, r, &s, &t);
         __mmask8 ok = _mm256_cmp_pd_mask(denom, zero, _CMP_NEQ_OQ);
