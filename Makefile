@@ -95,8 +95,8 @@ SUPPORT_SRCS := $(wildcard tests/support/*.c)
 SUPPORT_LIB := $(B)/lib/libtestsupport.a
 TESTS := $(patsubst tests/%.c,$(B)/tests/%,$(wildcard tests/test_*.c))
 
-.PHONY: all help deps test run bench soak plots plots-check book clean \
-        _test _run _bench _soak _plots _plots-check _book programs tests
+.PHONY: all help deps book-deps test run bench soak plots plots-check book book-check clean \
+        _test _run _bench _soak _plots _plots-check _book _book-check programs tests
 
 all: $(LIBFILES) $(PROGRAMS) $(BENCHES)
 
@@ -107,12 +107,19 @@ help:
 	@echo "make bench     throughput benchmarks"
 	@echo "make soak      the statistical tests over SEEDS seeds; prints the failure rate"
 	@echo "make plots     every figure under build/plots/"
-	@echo "make book      the tutorial as HTML under build/book/"
+	@echo "make book      the tutorial as HTML and EPUB under build/book/"
+	@echo "make book-check  the book, then its checks: broken fixtures, links, EPUB, a headless browser"
 	@echo "make deps      install the Debian packages the project needs, when missing"
 	@echo "make clean     remove build/"
 
 deps:
 	@sh tools/deps.sh $(DEB_PACKAGES)
+
+# What only the book's checks need: a real browser, python3 to drive it
+# (over Chromium's DevTools pipe, no extra module), epubcheck.
+BOOK_CHECK_PACKAGES := chromium python3 epubcheck
+book-deps: deps
+	@sh tools/deps.sh --always $(BOOK_CHECK_PACKAGES)
 
 # The public targets first make sure the packages are there, then build in a
 # second make so that `-j` cannot start compiling before the install ends.
@@ -130,6 +137,8 @@ plots-check: deps
 	@$(MAKE) --no-print-directory _plots-check
 book: deps
 	@$(MAKE) --no-print-directory _book
+book-check: book-deps
+	@$(MAKE) --no-print-directory _book-check
 
 programs: $(PROGRAMS)
 tests: $(TESTS)
@@ -153,9 +162,10 @@ _plots: all
 _plots-check: all
 	@if [ -f plots/Makefile.inc ]; then $(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) check; \
 	 else echo "make plots-check: not yet"; fi
-_book: all
-	@if [ -f book/Makefile.inc ]; then $(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) html; \
-	 else echo "make book: not yet"; fi
+_book: all $(TESTS)
+	@$(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) html
+_book-check: _book
+	@$(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) check
 
 clean:
 	rm -rf build

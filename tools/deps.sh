@@ -1,9 +1,16 @@
 #!/bin/sh
 # Installs the Debian packages given as arguments when some are missing.
 # Cheap when everything is there: one pkg-config check and two `command -v`,
-# no apt call. As root it uses apt-get; otherwise sudo apt-get.
+# no apt call. As root it uses apt-get; otherwise sudo apt-get. With
+# --always first, the packages are asked of dpkg one by one instead (for
+# lists other than the build's, which the quick check does not cover).
 set -eu
-if command -v pkg-config >/dev/null 2>&1 &&
+quick=1
+if [ "${1:-}" = "--always" ]; then
+    quick=0
+    shift
+fi
+if [ "$quick" = 1 ] && command -v pkg-config >/dev/null 2>&1 &&
    pkg-config --exists cmocka gsl libpng 2>/dev/null &&
    command -v cc >/dev/null 2>&1 && command -v gnuplot >/dev/null 2>&1 &&
    command -v pandoc >/dev/null 2>&1; then

@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# book/build.sh BUILD - builds the book from book/*.md into BUILD/book/.
+#
+# Every chapter goes through pandoc twice with book/mcbox.lua: once to its
+# HTML page, once to Markdown with every listing, run and number resolved,
+# from which the EPUB is made (so the commands run once per build: the
+# second pass reads their output from BUILD/book-state/runs). Then the
+# pages of whole source files that listings link to, the contents page,
+# and a last pass that fails if any marked region of the tree went unused.
+# Any error of the filter or any pandoc warning stops the build.
+#
+# For writing one chapter: BOOK_DIR=DIR puts the output in DIR/book and
+# DIR/book-state instead of BUILD's, and BOOK_ONLY="01 02" builds only the
+# chapters with those numbers (and skips the check for unused regions).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+B=$(cd "${1:-build}" && pwd)
+D=${BOOK_DIR:-$B}
+mkdir -p "$D"
+D=$(cd "$D" && pwd)
+OUT=$D/book
+STATE=$D/book-state
+t0=$(date +%s%N)
+
+rm -rf "$OUT" "$STATE"
+mkdir -p "$OUT" "$STATE/runs" "$STATE/md" "$STATE/runs-cwd"
+export BOOK_BUILD=$B BOOK_OUT=$OUT BOOK_STATE=$STATE BOOK_SRC=$PWD BOOK_RUNS=$STATE/runs-cwd
+: >"$STATE/used-regions"
+: >"$STATE/used-files"
+
+mapfile -t chapters < <(ls book/[0-9][0-9]-*.md | sort)
+if [ -n "${BOOK_ONLY:-}" ]; then
+    keep=()
+    for ch in "${chapters[@]}"; do
+        for k in $BOOK_ONLY; do [[ $(basename "$ch") == "$k"-* ]] && keep+=("$ch"); done
+    done
+    chapters=("${keep[@]}")
+fi
+[ ${#chapters[@]} -gt 0 ] || { echo "book: no chapters in book/" >&2; exit 1; }
+
+title_of() { # the chapter's first level-1 heading, without its attributes
+    sed -n 's/^# \(.*\)$/\1/p' "$1" | head -1 | sed 's/ *{[^}]*}$//'
+}
+summary_of() { sed -n 's/^summary: *//p' "$1" | head -1; }
+stem_of() { basename "$1" .md; }
+
+# Anchors: "id page" for every explicit {#id} of every chapter, so that a
+# link to #id from another chapter reaches the right page.
+for ch in "${chapters[@]}"; do
+    grep -o '{#[A-Za-z0-9_:.-]*' "$ch" | sed "s/^{#//; s/\$/ $(stem_of "$ch").html/" || true
+done >"$STATE/anchors"
+
+PANDOC=(pandoc --fail-if-warnings --lua-filter book/mcbox.lua -f markdown)
+n=${#chapters[@]}
+for ((i = 0; i < n; i++)); do
+    ch=${chapters[i]}
+    stem=$(stem_of "$ch")
+    vars=(-M "pagetitle=$(title_of "$ch")" -V root=)
+    if ((i > 0)); then
+        vars+=(-V "prev=$(stem_of "${chapters[i - 1]}").html" -V "prevtitle=$(title_of "${chapters[i - 1]}")")
+    fi
+    if ((i + 1 < n)); then
+        vars+=(-V "next=$(stem_of "${chapters[i + 1]}").html" -V "nexttitle=$(title_of "${chapters[i + 1]}")")
+    fi
+    "${PANDOC[@]}" -t html5 -s --template book/template.html --mathml "${vars[@]}" \
+        -o "$OUT/$stem.html" "$ch"
+    "${PANDOC[@]}" -t markdown -o "$STATE/md/$stem.md" "$ch"
+done
+
+# The pages of whole files, with line numbers (anchors L-1, L-2, ...).
+sort -u "$STATE/used-files" | while read -r f; do
+    page=$OUT/src/$f.html
+    mkdir -p "$(dirname "$page")"
+    depth=$(($(tr -cd / <<<"src/$f" | wc -c)))
+    root=$(printf '../%.0s' $(seq 1 "$depth"))
+    ext=${f##*.}
+    case $ext in c | h) lang=c ;; sh) lang=bash ;; gp) lang=gnuplot ;; *) lang=$ext ;; esac
+    {
+        printf '# `%s`\n\n' "$f"
+        printf '~~~~~~~~~~~~~~~~ {#L .%s .numberLines}\n' "$lang"
+        cat "$f"
+        printf '~~~~~~~~~~~~~~~~\n'
+    } | pandoc --fail-if-warnings -f markdown -t html5 -s --template book/template.html \
+        -M "pagetitle=$f" -V "root=$root" -o "$page"
+done
+
+# The contents page: book/index.md, then one line per chapter.
+{
+    cat book/index.md
+    printf '\n::: {.contents}\n'
+    for ch in "${chapters[@]}"; do
+        printf -- '- [%s](%s.html) [%s]{.summary}\n' "$(title_of "$ch")" "$(stem_of "$ch")" "$(summary_of "$ch")"
+    done
+    printf ':::\n'
+} | pandoc --fail-if-warnings -f markdown -t html5 -s --template book/template.html \
+    -M "pagetitle=Contents" -V root= -o "$OUT/index.html"
+
+cp book/style.css "$OUT/style.css"
+
+# The EPUB, from the resolved Markdown of every chapter.
+(cd "$STATE/md" && pandoc --fail-if-warnings -f markdown -t epub3 --mathml \
+    --metadata title="mcbox: Monte Carlo, verified" --metadata lang=en \
+    --css "$OUT/style.css" --resource-path="$OUT" --epub-chapter-level=1 \
+    -o "$OUT/mcbox.epub" $(for ch in "${chapters[@]}"; do echo "$(stem_of "$ch").md"; done))
+
+# Every marked region of the tree is used by some chapter.
+if [ -z "${BOOK_ONLY:-}" ]; then
+    pandoc --fail-if-warnings -f markdown -t plain --lua-filter book/mcbox.lua \
+        -M book-check-regions=true -o /dev/null </dev/null
+fi
+
+# What the build did, for the closing line and the README.
+count() { [ -f "$1" ] && wc -l <"$1" || echo 0; }
+words_of() { # prose only: fenced blocks and the front matter left out
+    awk '/^(```|~~~)/ { fence = !fence; next } NR == 1 && /^---$/ { yaml = 1; next }
+         yaml { if (/^---$/) yaml = 0; next } !fence' "$1" | wc -w
+}
+words=0
+for ch in "${chapters[@]}"; do
+    w=$(words_of "$ch")
+    words=$((words + w))
+    printf '%s %d\n' "$(stem_of "$ch")" "$w"
+done >"$STATE/words"
+t1=$(date +%s%N)
+printf 'book: %d chapters, %d words, %d listings, %d runs, %d numbers, %d figures, %d source pages, %.1f s -> %s\n' \
+    "$n" "$words" "$(count "$STATE/used-regions")" "$(count "$STATE/run-count")" \
+    "$(count "$STATE/number-count")" "$(count "$STATE/figures")" "$(sort -u "$STATE/used-files" | wc -l)" \
+    "$(awk -v a="$t0" -v b="$t1" 'BEGIN { print (b - a) / 1e9 }')" "$OUT/index.html"
