@@ -54,7 +54,7 @@ end
 -- The line of the chapter that mentions `needle` (pandoc's Markdown reader
 -- keeps no source positions), so that errors point at the element.
 local chapter_lines
-local function chapter_where(needle)
+local function chapter_where(needle, nth)
   if not chapter_lines then
     chapter_lines = {}
     local f = io.open(chapter, "r")
@@ -63,8 +63,12 @@ local function chapter_where(needle)
       f:close()
     end
   end
+  local seen = 0
   for i, l in ipairs(chapter_lines) do
-    if needle and l:find(needle, 1, true) then return chapter .. ":" .. i end
+    if needle and l:find(needle, 1, true) then
+      seen = seen + 1
+      if seen >= (nth or 1) then return chapter .. ":" .. i end
+    end
   end
   return chapter .. ":1"
 end
@@ -261,7 +265,10 @@ local function run(el)
   end
   run_count = run_count + 1
   if id then
-    if runs[id] then die(where, "two runs are named '" .. id .. "'") end
+    if runs[id] then
+      local second = chapter_where("#" .. id, 2)
+      die(second ~= chapter .. ":1" and second or where, "two runs are named '" .. id .. "'")
+    end
     runs[id] = { out = outtext, csv = parse_csv(outtext), cmd = cmd }
   end
   append_line(state .. "/run-count", chapter)
@@ -386,6 +393,7 @@ local function para(el)
     local img = el.content[1]
     local regen = img.attributes["data-regenerate"]
     if regen then
+      img.attributes["data-regenerate"] = nil
       local stem = img.src:match("figures/(.+)%.png$")
       return pandoc.Div({ el, pandoc.Para({ pandoc.Str("Regenerate: "), pandoc.Code("make plots"),
         pandoc.Str(" (script "), pandoc.Code("plots/" .. stem .. ".gp"), pandoc.Str(", data "),
@@ -439,16 +447,14 @@ local function check_regions()
     " mc samplers pdf render examples tests bench plots tools Makefile 2>/dev/null | sort")
   local n = 0
   for path in p:lines() do
-    if not path:match("^tests/book/") then
-      local regions = regions_of(path)
-      local names = {}
-      for name, r in pairs(regions) do names[#names + 1] = { name, r.first } end
-      table.sort(names, function(x, y) return x[2] < y[2] end)
-      for _, nr in ipairs(names) do
-        n = n + 1
-        if not used[path .. " " .. nr[1]] then
-          die(path .. ":" .. (nr[2] - 1), "region '" .. nr[1] .. "' is used by no chapter")
-        end
+    local regions = regions_of(path)
+    local names = {}
+    for name, r in pairs(regions) do names[#names + 1] = { name, r.first } end
+    table.sort(names, function(x, y) return x[2] < y[2] end)
+    for _, nr in ipairs(names) do
+      n = n + 1
+      if not used[path .. " " .. nr[1]] then
+        die(path .. ":" .. (nr[2] - 1), "region '" .. nr[1] .. "' is used by no chapter")
       end
     end
   end
