@@ -80,7 +80,10 @@ LIBS := -lgsl -lgslcblas -lpng -lm
 TEST_LIBS := -lcmocka
 
 # Debian packages the project needs (see `make deps`).
-DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox pandoc libpng-dev
+# fonts-texgyre-math: the book ships its math font (TeX Gyre Pagella Math),
+# so that formulas look the same on every reader's machine.
+DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox pandoc libpng-dev \
+                fonts-texgyre-math
 
 LAYERS := render pdf samplers mc
 lib_srcs = $(wildcard $(1)/*.c)

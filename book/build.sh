@@ -52,10 +52,10 @@ done >"$STATE/anchors"
 
 PANDOC=(pandoc --fail-if-warnings --lua-filter book/mcbox.lua -f markdown)
 n=${#chapters[@]}
-for ((i = 0; i < n; i++)); do
-    ch=${chapters[i]}
+chapter() { # $1 = index: the chapter's HTML page, then its resolved Markdown
+    local i=$1 ch=${chapters[$1]} stem
     stem=$(stem_of "$ch")
-    vars=(-M "pagetitle=$(title_of "$ch")" -V root=)
+    local vars=(-M "pagetitle=$(title_of "$ch")" -V root=)
     if ((i > 0)); then
         vars+=(-V "prev=$(stem_of "${chapters[i - 1]}").html" -V "prevtitle=$(title_of "${chapters[i - 1]}")")
     fi
@@ -63,15 +63,27 @@ for ((i = 0; i < n; i++)); do
         vars+=(-V "next=$(stem_of "${chapters[i + 1]}").html" -V "nexttitle=$(title_of "${chapters[i + 1]}")")
     fi
     "${PANDOC[@]}" -t html5 -s --template book/template.html --mathml "${vars[@]}" \
-        -o "$OUT/$stem.html" "$ch"
-    "${PANDOC[@]}" -t markdown -o "$STATE/md/$stem.md" "$ch"
+        -o "$OUT/$stem.html" "$ch" &&
+        "${PANDOC[@]}" -t markdown -o "$STATE/md/$stem.md" "$ch"
+}
+# Two chapters at a time (the machine's two cores): their runs are
+# independent, and a command two chapters share is cached by whichever
+# finishes it first.
+jobs_max=${BOOK_JOBS:-2}
+rm -f "$STATE/failed"
+for ((i = 0; i < n; i++)); do
+    { chapter "$i" || touch "$STATE/failed"; } &
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
 done
+wait
+[ ! -e "$STATE/failed" ] || exit 1
 
-# The pages of whole files, with line numbers (anchors L-1, L-2, ...).
-sort -u "$STATE/used-files" | while read -r f; do
-    page=$OUT/src/$f.html
+# The pages of whole files, with line numbers (anchors L-1, L-2, ...), two
+# at a time.
+source_page() { # $1 = path of a source file
+    local f=$1 page=$OUT/src/$1.html depth root ext lang
     mkdir -p "$(dirname "$page")"
-    depth=$(($(tr -cd / <<<"src/$f" | wc -c)))
+    depth=$(tr -cd / <<<"src/$f" | wc -c)
     root=$(printf '../%.0s' $(seq 1 "$depth"))
     ext=${f##*.}
     case $ext in c | h) lang=c ;; sh) lang=bash ;; gp) lang=gnuplot ;; *) lang=$ext ;; esac
@@ -82,7 +94,10 @@ sort -u "$STATE/used-files" | while read -r f; do
         printf '~~~~~~~~~~~~~~~~\n'
     } | pandoc --fail-if-warnings -f markdown -t html5 -s --template book/template.html \
         -M "pagetitle=$f" -V "root=$root" -o "$page"
-done
+}
+export -f source_page
+export OUT
+sort -u "$STATE/used-files" | xargs -r -P "$jobs_max" -I{} bash -c 'source_page "$1"' _ {}
 
 # The contents page: book/index.md, then one line per chapter.
 {
@@ -96,15 +111,31 @@ done
     -M "pagetitle=Contents" -V root= -o "$OUT/index.html"
 
 cp book/style.css "$OUT/style.css"
+# The math font the stylesheet names, shipped with the pages (no reader's
+# machine needs it installed, nothing is fetched).
+MATH_FONT=/usr/share/texmf/fonts/opentype/public/tex-gyre-math/texgyrepagella-math.otf
+[ -f "$MATH_FONT" ] || { echo "book: $MATH_FONT is missing (make deps installs fonts-texgyre-math)" >&2; exit 1; }
+mkdir -p "$OUT/fonts"
+cp "$MATH_FONT" "$OUT/fonts/"
 
-# The EPUB, from the resolved Markdown of every chapter.
+# The EPUB, from the resolved Markdown of every chapter. Its stylesheet sits
+# in styles/ beside the embedded fonts/ of the container.
+sed 's#url("fonts/#url("../fonts/#' book/style.css >"$STATE/epub.css"
 (cd "$STATE/md" && pandoc --fail-if-warnings -f markdown -t epub3 --mathml \
     --metadata title="mcbox: Monte Carlo, verified" --metadata lang=en \
-    --css "$OUT/style.css" --resource-path="$OUT" --epub-chapter-level=1 \
+    --css "$STATE/epub.css" --resource-path="$OUT" --epub-chapter-level=1 --toc-depth=1 \
+    --epub-embed-font="$MATH_FONT" \
     -o "$OUT/mcbox.epub" $(for ch in "${chapters[@]}"; do echo "$(stem_of "$ch").md"; done))
 
-# Every marked region of the tree is used by some chapter.
+# Every marked region of the tree is used by some chapter, and every
+# figure of `make plots` is shown by some chapter.
 if [ -z "${BOOK_ONLY:-}" ]; then
+    for stem in $(sed -n '/^STEMS :=/,/[^\\]$/p' plots/Makefile.inc | sed 's/^STEMS :=//; s/\\//g'); do
+        if ! grep -qx "plot $stem" "$STATE/figures" 2>/dev/null; then
+            echo "plots/Makefile.inc:1: figure '$stem' is shown by no chapter" >&2
+            exit 1
+        fi
+    done
     pandoc --fail-if-warnings -f markdown -t plain --lua-filter book/mcbox.lua \
         -M book-check-regions=true -o /dev/null </dev/null
 fi

@@ -245,13 +245,14 @@ local function run(el)
   local cached = state .. "/runs/" .. key
   local outtext = read_file(cached .. ".out")
   if not outtext then
-    local script = "cd " .. shell_quote(rundir) .. " && PATH=" ..
+    local script = "t0=$(date +%s%N); cd " .. shell_quote(rundir) .. " && PATH=" ..
       shell_quote(build .. "/bin:" .. build .. "/tests") .. ":\"$PATH\" " ..
       "MC_BUILD=" .. shell_quote(build) .. " bash -o pipefail -c " .. shell_quote(cmd) ..
+      " >" .. shell_quote(cached .. ".tmp") ..
       (with_err and " 2>&1" or " 2>" .. shell_quote(cached .. ".err")) ..
-      " >" .. shell_quote(cached .. ".tmp") .. "; echo $? >" .. shell_quote(cached .. ".rc")
+      "; echo $? >" .. shell_quote(cached .. ".rc") ..
+      "; echo $((($(date +%s%N) - t0) / 1000000)) >" .. shell_quote(cached .. ".ms")
     os.execute("mkdir -p " .. shell_quote(rundir) .. " " .. shell_quote(state .. "/runs"))
-    local t0 = os.time()
     os.execute(script)
     local rc = tonumber((read_file(cached .. ".rc") or "1"):match("%d+"))
     if rc ~= want then
@@ -261,7 +262,8 @@ local function run(el)
     end
     outtext = read_file(cached .. ".tmp") or ""
     os.rename(cached .. ".tmp", cached .. ".out")
-    append_line(state .. "/run-times", string.format("%d %s", os.time() - t0, cmd))
+    append_line(state .. "/run-times", (read_file(cached .. ".ms") or "?\n"):gsub("\n", "") ..
+      " ms " .. cmd:gsub("\n", " "))
   end
   run_count = run_count + 1
   if id then

@@ -19,11 +19,13 @@
 static const char *const methods[] = {"uniform", "cosine", "all", NULL};
 static const char *const extra_cols[] = {"variance"};
 
+/* BEGIN SNIPPET cos_cubed_integrand */
 static double cos_cubed(vec3 d, void *ctx)
 {
     (void)ctx;
     return d.z > 0.0 ? d.z * d.z * d.z : 0.0;
 }
+/* END SNIPPET cos_cubed_integrand */
 
 int main(int argc, char **argv)
 {
@@ -40,6 +42,7 @@ int main(int argc, char **argv)
               "cos_cubed [--method uniform|cosine|all] [--samples N] [--seed S] [--csv]", argc,
               argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
 
+    /* BEGIN SNIPPET cos_cubed_methods */
     const pdf_warp warps[2] = {{smp_uniform_hemisphere_sample, smp_uniform_hemisphere_pdf},
                                {smp_cosine_hemisphere_sample, smp_cosine_hemisphere_pdf}};
     app_table t = {stdout, csv, extra_cols, 1};
@@ -51,5 +54,6 @@ int main(int argc, char **argv)
         mc_estimate e = pdf_integrate_warp((pdf_fn){cos_cubed, NULL}, warps[m], &rng, n);
         app_table_row(&t, methods[m], e, MC_PI_2, &e.variance);
     }
+    /* END SNIPPET cos_cubed_methods */
     return 0;
 }

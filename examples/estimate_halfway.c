@@ -52,12 +52,14 @@ int main(int argc, char **argv)
     if (!s)
         app_fail("estimate_halfway", "out of memory for %llu samples", (unsigned long long)n);
 
+    /* BEGIN SNIPPET halfway_main */
     mc_fn1 f = {integrand, NULL};
     mc_rng rng = mc_rng_derive(seed, 0u);
     mc_estimate integral = mc_integrate_uniform(f, 0.0, MC_2PI, &rng, n, s);
     qsort(s, (size_t)n, sizeof *s, mc_weighted_compare);
     mc_estimate halfway = mc_weighted_quantile(s, (size_t)n, 0.5, f);
     free(s);
+    /* END SNIPPET halfway_main */
 
     app_table t = {stdout, csv, NULL, 0};
     app_table_begin(&t);

@@ -27,6 +27,7 @@ static double x_squared(double x, void *params)
     return x * x;
 }
 
+/* BEGIN SNIPPET x_sq_run */
 /* The uniform density of [0, 2] as a warp. */
 static double uniform02_sample(double u) { return 2.0 * u; }
 static double uniform02_pdf(double x) { return x >= 0.0 && x <= 2.0 ? 0.5 : 0.0; }
@@ -41,6 +42,7 @@ static void run(const app_table *t, const char *name, mc_warp1 w, uint64_t seed,
         e.std_error = 0.0;
     app_table_row(t, name, e, 8.0 / 3.0, &e.variance);
 }
+/* END SNIPPET x_sq_run */
 
 int main(int argc, char **argv)
 {

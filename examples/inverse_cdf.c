@@ -58,6 +58,7 @@ static void sine(const app_table *t, uint64_t seed, uint64_t n)
     report(t, "sine", &d, MC_PI_2);
 }
 
+/* BEGIN SNIPPET inverse_cdf_events */
 /* Draws n events with either table (cdf or alias; the other is NULL). */
 static void events(const app_table *t, const char *name, const smp_discrete_cdf *cdf,
                    const smp_alias *alias, uint64_t seed, uint64_t n)
@@ -79,6 +80,7 @@ static void events(const app_table *t, const char *name, const smp_discrete_cdf 
     }
     report(t, name, &d, mean);
 }
+/* END SNIPPET inverse_cdf_events */
 
 int main(int argc, char **argv)
 {

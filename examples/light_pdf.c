@@ -61,6 +61,7 @@ int main(int argc, char **argv)
     app_parse("light_pdf", "light_pdf [--method light|cosine|all] [--samples N] [--seed S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
 
+    /* BEGIN SNIPPET light_pdf_main */
     light l = {vec3_make(-0.3, 0.2, 1.0), vec3_make(0.8, 0.0, 0.2), vec3_make(0.0, 0.6, 0.1),
                vec3_make(0.0, 0.0, 0.0), 4.0};
     l.n = vec3_normalize(vec3_cross(l.u, l.v));
@@ -79,5 +80,6 @@ int main(int argc, char **argv)
         mc_estimate e = pdf_integrate((pdf_fn){radiance_cos, &l}, &pdfs[m], &rng, n);
         app_table_row(&t, methods[m], e, exact, &e.variance);
     }
+    /* END SNIPPET light_pdf_main */
     return 0;
 }

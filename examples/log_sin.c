@@ -53,6 +53,7 @@ int main(int argc, char **argv)
     const mc_fn1 f = {log_sin, NULL};
     app_table t = {stdout, csv, extra_cols, 1};
     app_table_begin(&t);
+    /* BEGIN SNIPPET log_sin_estimators */
     if (app_selected(method, "plain")) {
         mc_rng rng = mc_rng_derive(seed, 0u);
         mc_estimate e = mc_integrate_uniform(f, 0.0, MC_PI, &rng, n, NULL);
@@ -64,5 +65,6 @@ int main(int argc, char **argv)
         mc_estimate e = mc_integrate_is(f, w, &rng, n, NULL);
         app_table_row(&t, "importance", e, exact, &e.variance);
     }
+    /* END SNIPPET log_sin_estimators */
     return 0;
 }

@@ -41,6 +41,7 @@ typedef struct scene {
     double sky;      /* radiance of the sky, 0 for the light-only integrand */
 } scene;
 
+/* BEGIN SNIPPET mixture_integrand */
 /* The integrand: cos theta times the incoming radiance (over pi, the white
  * Lambertian BRDF, when there is a sky). */
 static double integrand(vec3 d, void *ctx)
@@ -51,6 +52,7 @@ static double integrand(vec3 d, void *ctx)
     double in = (pdf_value(&s->light, d) > 0.0 ? s->radiance : 0.0) + s->sky;
     return s->sky > 0.0 ? d.z * MC_INV_PI * in : d.z * in;
 }
+/* END SNIPPET mixture_integrand */
 
 int main(int argc, char **argv)
 {
@@ -73,6 +75,7 @@ int main(int argc, char **argv)
                              vec3_add(corner, v)};
     double irradiance = pdf_polygon_irradiance(origin, up, corners, 4, 4.0);
 
+    /* BEGIN SNIPPET mixture_build */
     pdf cosine = pdf_cosine(up), light = pdf_toward_quad(origin, corner, u, v);
     const pdf *parts[2] = {&cosine, &light};
     const double weights[2] = {0.5, 0.5};
@@ -87,6 +90,7 @@ int main(int argc, char **argv)
         int scene;
         const pdf *p;
     } rows[5] = {{0, &cosine}, {0, &light}, {0, &mix}, {1, &cosine}, {1, &mix}};
+    /* END SNIPPET mixture_build */
 
     app_table t = {stdout, csv, extra_cols, 1};
     app_table_begin(&t);

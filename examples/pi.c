@@ -26,6 +26,7 @@ static void row(const app_table *t, const char *method, mc_estimate e)
     app_table_row(t, method, e, MC_PI, &abs_error);
 }
 
+/* BEGIN SNIPPET pi_running */
 /* The book's endless loop, made finite: one stream, one point at a time,
  * printing the estimate after 10, 100, 1000, ... points (and after n). */
 static void running(const app_table *t, uint64_t seed, uint64_t n)
@@ -40,6 +41,7 @@ static void running(const app_table *t, uint64_t seed, uint64_t n)
         row(t, "running", mc_pi_from_hits(hits, done));
     }
 }
+/* END SNIPPET pi_running */
 
 int main(int argc, char **argv)
 {

@@ -27,6 +27,7 @@
 
 #define PROG "plotdata_chi2"
 
+/* BEGIN SNIPPET chi2_pairs */
 typedef struct pair {
     const char *name;
     vec3 (*sample)(double u1, double u2);
@@ -37,6 +38,7 @@ static const pair pairs[2] = {
     {"correct", smp_cosine_hemisphere_sample, smp_cosine_hemisphere_pdf},
     {"wrong", smp_theta_phi_sample, smp_uniform_hemisphere_pdf},
 };
+/* END SNIPPET chi2_pairs */
 
 static void param_sample(mc_rng *rng, void *ctx, double out[2])
 {

@@ -21,6 +21,7 @@
 static const char *const bodies[] = {"box", "sphere", "all", NULL};
 static const char *const extra_cols[] = {"area"};
 
+/* BEGIN SNIPPET projected_area_run */
 static void run(const app_table *t, const char *name, pdf_body b, bool by_rays, uint64_t seed,
                 uint64_t index, uint64_t n)
 {
@@ -29,6 +30,7 @@ static void run(const app_table *t, const char *name, pdf_body b, bool by_rays, 
     double area = pdf_body_area(b);
     app_table_row(t, name, e, area / 4.0, &area);
 }
+/* END SNIPPET projected_area_run */
 
 int main(int argc, char **argv)
 {

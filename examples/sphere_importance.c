@@ -26,6 +26,7 @@ static double cos_squared(vec3 d, void *ctx)
     return d.z * d.z;
 }
 
+/* BEGIN SNIPPET sphere_by_hand */
 /* The estimator written out, for the samplers that need more than two
  * uniforms (pdf_integrate_warp takes two). */
 static mc_estimate by_hand(int method, mc_rng *rng, uint64_t n)
@@ -44,6 +45,7 @@ static mc_estimate by_hand(int method, mc_rng *rng, uint64_t n)
     }
     return mc_welford_estimate(&w);
 }
+/* END SNIPPET sphere_by_hand */
 
 int main(int argc, char **argv)
 {
@@ -64,6 +66,7 @@ int main(int argc, char **argv)
     app_table t = {stdout, csv, extra_cols, 1};
     app_table_begin(&t);
     const double exact = MC_4PI / 3.0;
+    /* BEGIN SNIPPET sphere_methods */
     for (int m = 0; m < 3; m++) {
         if (!app_selected(method, methods[m]))
             continue;
@@ -76,5 +79,6 @@ int main(int argc, char **argv)
                 : by_hand(m, &rng, n);
         app_table_row(&t, methods[m], e, exact, &e.variance);
     }
+    /* END SNIPPET sphere_methods */
     return 0;
 }

@@ -61,6 +61,7 @@ int main(int argc, char **argv)
         app_fail("sphere_light",
                  "the sphere must lie wholly above the horizon: theta + asin(r / d) < 90 degrees");
 
+    /* BEGIN SNIPPET sphere_light_main */
     vec3 origin = vec3_make(0.0, 0.0, 0.0), up = vec3_make(0.0, 0.0, 1.0);
     vec3 center = vec3_make(dist * sin(theta), 0.0, dist * cos(theta));
     double radiance = flux / (MC_4PI * MC_PI * radius * radius);
@@ -79,5 +80,6 @@ int main(int argc, char **argv)
         mc_estimate e = pdf_integrate((pdf_fn){radiance_cos, &radiance}, &cone, &rng, n);
         app_table_row(&t, "cone", e, exact, &e.variance);
     }
+    /* END SNIPPET sphere_light_main */
     return 0;
 }

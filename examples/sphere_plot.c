@@ -33,6 +33,7 @@ int main(int argc, char **argv)
     if (n > 100000000u)
         app_fail("sphere_plot", "--samples: at most 1e8 points (a plot needs far fewer)");
 
+    /* BEGIN SNIPPET sphere_plot_loop */
     /* The three methods are warp's entries sphere-<method>: one sampler
      * table for both programs, so the scatter plot shows what warp tests. */
     char name[32], err[200];
@@ -49,5 +50,6 @@ int main(int argc, char **argv)
         warp_sample(e, &state, &rng, d);
         printf("%.17g %.17g %.17g\n", d[0], d[1], d[2]);
     }
+    /* END SNIPPET sphere_plot_loop */
     return 0;
 }

@@ -172,6 +172,7 @@ static void densities(const warp_entry *e, const warp_state *s)
     free(out);
 }
 
+/* BEGIN SNIPPET warp_chi2 */
 static int chi2(const warp_entry *e, const warp_state *s, const args *a)
 {
     warp_gof_ctx ctx = {e, s};
@@ -195,6 +196,7 @@ static int chi2(const warp_entry *e, const warp_state *s, const args *a)
     free(expct);
     return r.reject ? 1 : 0;
 }
+/* END SNIPPET warp_chi2 */
 
 int main(int argc, char **argv)
 {

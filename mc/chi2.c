@@ -7,6 +7,7 @@
 
 #include "mc/gsl_quiet.h"
 
+/* BEGIN SNIPPET chi2_pool */
 mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, double min_expected)
 {
     mc_chi2_result r = {0.0, 0, 1.0, 0u, 0.0, 0.0, 0.0};
@@ -37,6 +38,8 @@ mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, d
         pool_exp += exp[smallest];
         big_cells--;
     }
+    /* END SNIPPET chi2_pool */
+    /* BEGIN SNIPPET chi2_sum */
     for (size_t i = 0; i < n; i++) {
         if (exp[i] < min_expected || (merge_smallest && i == smallest))
             continue;
@@ -59,7 +62,9 @@ mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, d
     r.pvalue = r.dof > 0 || isnan(r.stat) ? mc_chi2_pvalue(r.stat, r.dof) : 1.0;
     return r;
 }
+/* END SNIPPET chi2_sum */
 
+/* BEGIN SNIPPET chi2_pvalue */
 double mc_chi2_pvalue(double stat, int dof)
 {
     /* An invalid (NaN) statistic, e.g. from a pdf that returned NaN, is
@@ -74,10 +79,13 @@ double mc_chi2_pvalue(double stat, int dof)
     mc_gsl_quiet();
     return gsl_cdf_chisq_Q(stat, (double)dof);
 }
+/* END SNIPPET chi2_pvalue */
 
+/* BEGIN SNIPPET sidak_alpha */
 double mc_sidak_alpha(double alpha, int m)
 {
     /* 1 - (1 - alpha)^(1/m) computed as -expm1(log1p(-alpha) / m): the naive
      * form loses most digits when alpha / m is tiny. */
     return -expm1(log1p(-alpha) / (double)m);
 }
+/* END SNIPPET sidak_alpha */

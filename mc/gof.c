@@ -12,6 +12,7 @@ int mc_gof_cell_count(const mc_gof_spec *spec)
     return spec->dims == 2 ? spec->cells[0] * spec->cells[1] : spec->cells[0];
 }
 
+/* BEGIN SNIPPET gof_histogram */
 /* The cell of coordinate x in [lo, hi] cut into n cells, or -1 when x lies
  * outside by more than round-off (NaN fails both comparisons: outside). */
 static int cell_of(double x, double lo, double hi, int n)
@@ -39,6 +40,7 @@ double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double
     }
     return outside;
 }
+/* END SNIPPET gof_histogram */
 
 /* The density as the integrands mc_quad takes. */
 static double density_1d(double x, void *params)
@@ -55,6 +57,7 @@ static double density_2d(double x, double y, void *params)
     return s->pdf(p, s->ctx);
 }
 
+/* BEGIN SNIPPET gof_integrate_box */
 static double integrate_box(const mc_gof_spec *s, mc_quad *q, double x0, double x1, double y0,
                             double y1)
 {
@@ -68,6 +71,7 @@ static double integrate_box(const mc_gof_spec *s, mc_quad *q, double x0, double 
         (void)mc_quad_2d(q, (mc_fn2){density_2d, (void *)s}, x0, x1, y0, y1, &v, NULL);
     return v;
 }
+/* END SNIPPET gof_integrate_box */
 
 double mc_gof_integrate(const mc_gof_spec *spec, mc_quad *q)
 {
@@ -108,6 +112,7 @@ int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob)
     return failed ? -1 : 0;
 }
 
+/* BEGIN SNIPPET gof_expected */
 int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct)
 {
     int status = mc_gof_cell_probs(spec, expct);
@@ -124,7 +129,9 @@ int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct)
     }
     return status;
 }
+/* END SNIPPET gof_expected */
 
+/* BEGIN SNIPPET gof_test */
 mc_gof_result mc_gof_test(const mc_gof_spec *spec, uint64_t n, mc_rng *rng, double alpha,
                           double *obs, double *expct)
 {
@@ -143,3 +150,4 @@ mc_gof_result mc_gof_test(const mc_gof_spec *spec, uint64_t n, mc_rng *rng, doub
                  res.r.obs_in_zero_cells > MC_GOF_ZERO_CELL_FRAC * (double)n;
     return res;
 }
+/* END SNIPPET gof_test */

@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+/* BEGIN SNIPPET integrate_sampler */
 mc_estimate mc_integrate_sampler(mc_is_sampler s, void *x, mc_rng *rng, uint64_t n)
 {
     mc_welford acc = mc_welford_init();
@@ -17,6 +18,7 @@ mc_estimate mc_integrate_sampler(mc_is_sampler s, void *x, mc_rng *rng, uint64_t
     }
     return mc_welford_estimate(&acc);
 }
+/* END SNIPPET integrate_sampler */
 
 /* mc_integrate_is as an mc_is_sampler over doubles. */
 typedef struct warp1_ctx {
@@ -56,6 +58,7 @@ mc_estimate mc_integrate_is(mc_fn1 f, mc_warp1 w, mc_rng *rng, uint64_t n, mc_we
     return mc_integrate_sampler(s, &x, rng, n);
 }
 
+/* BEGIN SNIPPET integrate_uniform */
 mc_estimate mc_integrate_uniform(mc_fn1 f, double a, double b, mc_rng *rng, uint64_t n,
                                  mc_weighted *record)
 {
@@ -72,6 +75,7 @@ mc_estimate mc_integrate_uniform(mc_fn1 f, double a, double b, mc_rng *rng, uint
     }
     return mc_welford_estimate(&acc);
 }
+/* END SNIPPET integrate_uniform */
 
 int mc_weighted_compare(const void *a, const void *b)
 {
@@ -79,6 +83,7 @@ int mc_weighted_compare(const void *a, const void *b)
     return (xa > xb) - (xa < xb);
 }
 
+/* BEGIN SNIPPET weighted_quantile */
 mc_estimate mc_weighted_quantile(const mc_weighted *s, size_t n, double q, mc_fn1 f)
 {
     mc_estimate bad = {n, nan(""), nan(""), nan("")};
@@ -108,3 +113,4 @@ mc_estimate mc_weighted_quantile(const mc_weighted *s, size_t n, double q, mc_fn
     mc_estimate e = {n, xq, var, sqrt(var / (double)n)};
     return e;
 }
+/* END SNIPPET weighted_quantile */

@@ -14,6 +14,7 @@
 
 #include "mc/vec3.h"
 
+/* BEGIN SNIPPET onb_from_w */
 typedef struct onb {
     vec3 s, t, n; /* tangent, bitangent, normal; s x t = n */
 } onb;
@@ -32,7 +33,9 @@ static inline onb onb_from_w(vec3 n)
     o.n = n;
     return o;
 }
+/* END SNIPPET onb_from_w */
 
+/* BEGIN SNIPPET onb_to_world_local */
 /* The world vector with coordinates (a.x, a.y, a.z) in the basis. */
 static inline vec3 onb_to_world(const onb *o, vec3 a)
 {
@@ -44,5 +47,6 @@ static inline vec3 onb_to_local(const onb *o, vec3 v)
 {
     return vec3_make(vec3_dot(v, o->s), vec3_dot(v, o->t), vec3_dot(v, o->n));
 }
+/* END SNIPPET onb_to_world_local */
 
 #endif /* MC_ONB_H */

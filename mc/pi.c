@@ -62,6 +62,7 @@ static inline uint64_t inside_u32(uint32_t ux, uint32_t uy)
     return a * a + b * b < (UINT64_C(1) << 62);
 }
 
+/* BEGIN SNIPPET pi_hits_scalar */
 uint64_t mc_pi_hits_scalar(mc_rng *rng, uint64_t n)
 {
     uint64_t hits = 0;
@@ -73,7 +74,9 @@ uint64_t mc_pi_hits_scalar(mc_rng *rng, uint64_t n)
     }
     return hits;
 }
+/* END SNIPPET pi_hits_scalar */
 
+/* BEGIN SNIPPET pi_from_hits */
 mc_estimate mc_pi_from_hits(uint64_t hits, uint64_t n)
 {
     double p = (double)hits / (double)n;
@@ -81,6 +84,7 @@ mc_estimate mc_pi_from_hits(uint64_t hits, uint64_t n)
     mc_estimate e = {n, 4.0 * p, var, sqrt(var / (double)n)};
     return e;
 }
+/* END SNIPPET pi_from_hits */
 
 /* `rounds` samples on each of the LANES streams (state[l], inc[l]), two
  * outputs per sample. Each lane's state advances independently, so the
@@ -149,6 +153,7 @@ mc_estimate mc_pi_plain(uint64_t seed, uint64_t n, int threads, uint64_t *hits_o
 
 /* --- stratified ---------------------------------------------------------- */
 
+/* BEGIN SNIPPET pi_jittered_cell */
 /* A jittered grid of sx x sy cells: cell (i, j) is [i, i+1) x [j, j+1)
  * scaled by (1/sx, 1/sy). */
 typedef struct grid {
@@ -167,6 +172,7 @@ static inline uint64_t inside_cell(const grid *g, uint64_t i, uint64_t j, uint32
     double y = ((double)j + (double)uy * 0x1p-32) * g->inv_sy;
     return x * x + y * y < 1.0;
 }
+/* END SNIPPET pi_jittered_cell */
 
 /* Rows j and j+1: the cells of column i form a pair; column i belongs to
  * lane i % LANES, which draws x, y in row j then x, y in row j+1. */
@@ -254,6 +260,7 @@ mc_estimate mc_pi_stratified(uint64_t seed, uint64_t n, int threads, uint64_t *h
         hits += t.hits;
         discord += t.discord;
     }
+    /* BEGIN SNIPPET pi_stratified_error */
     /* The extra points: plain uniform, with their own sample variance. */
     uint64_t extra = n - (uint64_t)sx * sy, extra_hits = 0;
     mc_rng r = mc_rng_derive(seed, STRAT_EXTRA);
@@ -269,4 +276,5 @@ mc_estimate mc_pi_stratified(uint64_t seed, uint64_t n, int threads, uint64_t *h
         *hits_out = hits;
     mc_estimate e = {n, 4.0 * (double)hits / nd, sum_var / nd, sqrt(sum_var) / nd};
     return e;
+    /* END SNIPPET pi_stratified_error */
 }

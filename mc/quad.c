@@ -76,6 +76,7 @@ typedef struct nested {
     int status;        /* first failing inner status, or 0 */
 } nested;
 
+/* BEGIN SNIPPET quad_nested_2d */
 static double inner_integrand(double y, void *params)
 {
     nested *s = params;
@@ -107,3 +108,4 @@ int mc_quad_2d(mc_quad *q, mc_fn2 fn, double x0, double x1, double y0, double y1
         *abserr = err + s.inner_err * fabs(x1 - x0);
     return status ? status : s.status;
 }
+/* END SNIPPET quad_nested_2d */

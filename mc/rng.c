@@ -12,6 +12,7 @@ void mc_rng_seed(mc_rng *rng, uint64_t seed, uint64_t stream)
     (void)mc_rng_u32(rng);
 }
 
+/* BEGIN SNIPPET rng_derive */
 /* SplitMix64's finaliser (Steele, Lea, Flood 2014): a bijective 64-bit mix
  * whose outputs for consecutive inputs look independent. */
 static uint64_t splitmix64(uint64_t x)
@@ -30,6 +31,7 @@ mc_rng mc_rng_derive(uint64_t seed, uint64_t index)
     mc_rng_seed(&rng, splitmix64(seed ^ splitmix64(index)), splitmix64(index ^ splitmix64(seed)));
     return rng;
 }
+/* END SNIPPET rng_derive */
 
 uint32_t mc_rng_bounded(mc_rng *rng, uint32_t bound)
 {

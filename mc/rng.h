@@ -33,6 +33,7 @@ void mc_rng_seed(mc_rng *rng, uint64_t seed, uint64_t stream);
  * different indices select different PCG streams and hashed start states. */
 mc_rng mc_rng_derive(uint64_t seed, uint64_t index);
 
+/* BEGIN SNIPPET rng_u32_uniform */
 /* The next 32 uniformly distributed bits. */
 static inline uint32_t mc_rng_u32(mc_rng *rng)
 {
@@ -50,6 +51,7 @@ static inline double mc_rng_uniform(mc_rng *rng)
 {
     return (double)mc_rng_u32(rng) * 0x1p-32;
 }
+/* END SNIPPET rng_u32_uniform */
 
 /* An unbiased integer in [0, bound) by rejection of the 2^32 mod bound
  * lowest outputs (PCG's pcg32_boundedrand_r; same sequence). bound >= 1. */

@@ -11,6 +11,7 @@ mc_welford mc_welford_init(void)
     return w;
 }
 
+/* BEGIN SNIPPET welford_add */
 void mc_welford_add(mc_welford *w, double x)
 {
     /* Welford (1962): update the mean by delta / n, then accumulate
@@ -21,6 +22,7 @@ void mc_welford_add(mc_welford *w, double x)
     w->mean += delta / (double)w->n;
     w->m2 += delta * (x - w->mean);
 }
+/* END SNIPPET welford_add */
 
 mc_welford mc_welford_merge(mc_welford a, mc_welford b)
 {
@@ -56,6 +58,7 @@ mc_estimate mc_welford_estimate(const mc_welford *w)
     return e;
 }
 
+/* BEGIN SNIPPET z_score_pvalue */
 double mc_z_score(double estimate, double exact, double std_error)
 {
     double diff = estimate - exact;
@@ -70,3 +73,4 @@ double mc_z_pvalue(double z)
 {
     return erfc(fabs(z) / MC_SQRT2);
 }
+/* END SNIPPET z_score_pvalue */

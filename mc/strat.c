@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+/* BEGIN SNIPPET strat_grid */
 void mc_strat_grid(size_t n, size_t *sx, size_t *sy)
 {
     /* sqrt in double can be off by one near large perfect squares; correct
@@ -17,6 +18,7 @@ void mc_strat_grid(size_t n, size_t *sx, size_t *sy)
     *sx = s;
     *sy = n / s;
 }
+/* END SNIPPET strat_grid */
 
 /* A cell product (i + u) / n may round up to 1.0: for the last cell once
  * n >= 2^21, where n - 1 + (1 - 2^-32) rounds to n. Keep the documented
@@ -33,6 +35,7 @@ void mc_jitter_1d(mc_rng *rng, size_t n, double *out)
         out[i] = below_one(((double)i + mc_rng_uniform(rng)) * inv_n);
 }
 
+/* BEGIN SNIPPET jitter_2d */
 void mc_jitter_2d(mc_rng *rng, size_t n, double *xy)
 {
     size_t sx, sy;
@@ -53,3 +56,4 @@ void mc_jitter_2d(mc_rng *rng, size_t n, double *xy)
     for (k = 0; k < 2 * n; k++)
         xy[k] = below_one(xy[k]);
 }
+/* END SNIPPET jitter_2d */

@@ -17,6 +17,7 @@ typedef struct dir_ctx {
     pdf_warp warp;
 } dir_ctx;
 
+/* BEGIN SNIPPET direction_estimators */
 static double dir_f(const void *x, void *ctx)
 {
     const dir_ctx *c = ctx;
@@ -53,6 +54,7 @@ mc_estimate pdf_integrate_warp(pdf_fn f, pdf_warp warp, mc_rng *rng, uint64_t n)
     vec3 d;
     return mc_integrate_sampler((mc_is_sampler){warp_draw, dir_f, NULL, &c}, &d, rng, n);
 }
+/* END SNIPPET direction_estimators */
 
 /* Lambert: the irradiance is L times the projected solid angle, and by
  * Stokes the projected solid angle of a spherical polygon is half the
@@ -96,6 +98,7 @@ mc_estimate pdf_sphere_light_by_area(vec3 x, vec3 n, vec3 center, double radius,
     return mc_welford_estimate(&w);
 }
 
+/* BEGIN SNIPPET body_projected_area */
 double pdf_body_area(pdf_body b)
 {
     if (!b.is_box)
@@ -111,6 +114,7 @@ double pdf_body_projected_area(pdf_body b, vec3 d)
     return 4.0 * (fabs(d.x) * b.half.y * b.half.z + fabs(d.y) * b.half.z * b.half.x +
                   fabs(d.z) * b.half.x * b.half.y);
 }
+/* END SNIPPET body_projected_area */
 
 /* Whether the line o + t d (all t) meets the body. For the sphere, the
  * line's distance from the centre; for the box, Kay and Kajiya's slabs:
@@ -138,6 +142,7 @@ static bool line_hits(pdf_body b, vec3 o, vec3 d)
     return t0 <= t1;
 }
 
+/* BEGIN SNIPPET mean_projected_area */
 mc_estimate pdf_mean_projected_area(pdf_body b, bool by_rays, mc_rng *rng, uint64_t n)
 {
     double r = b.is_box ? vec3_length(b.half) : b.radius, window = 4.0 * r * r;
@@ -159,3 +164,4 @@ mc_estimate pdf_mean_projected_area(pdf_body b, bool by_rays, mc_rng *rng, uint6
     }
     return mc_welford_estimate(&w);
 }
+/* END SNIPPET mean_projected_area */

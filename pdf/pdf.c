@@ -80,6 +80,7 @@ pdf pdf_list(const pdf *const *items, size_t n)
     return p;
 }
 
+/* BEGIN SNIPPET toward_quad */
 /* Where the ray origin + r d (r > 0) meets the parallelogram: the density
  * 1 / A per unit area becomes dist^2 / (|cos| A) per unit solid angle,
  * because a patch dA at distance dist, tilted by the angle whose cosine is
@@ -109,7 +110,9 @@ static vec3 quad_generate(const pdf *p, mc_rng *rng)
     vec3 x = smp_parallelogram_sample(u1, u2, p->as.quad.corner, p->as.quad.u, p->as.quad.v);
     return vec3_normalize(vec3_sub(x, p->as.quad.origin));
 }
+/* END SNIPPET toward_quad */
 
+/* BEGIN SNIPPET toward_sphere */
 /* Uniform in the cone: the cap sampler's constant density inside (taken at
  * its axis, which is always inside), 0 outside the rim. The rim test uses
  * the rounded cosine with its slack; the density uses 1 - cos theta_max
@@ -129,6 +132,7 @@ static vec3 sphere_generate(const pdf *p, mc_rng *rng)
     vec3 local = smp_uniform_cap_sample(u1, u2, p->as.sphere.one_minus_cos);
     return onb_to_world(&p->as.sphere.frame, local);
 }
+/* END SNIPPET toward_sphere */
 
 double pdf_value(const pdf *p, vec3 d)
 {
@@ -143,6 +147,7 @@ double pdf_value(const pdf *p, vec3 d)
         return quad_value(p, d);
     case PDF_TOWARD_SPHERE:
         return sphere_value(p, d);
+    /* BEGIN SNIPPET mixture_value */
     case PDF_MIXTURE: {
         /* Every component may have produced d, so all of them count. */
         double sum = 0.0;
@@ -151,6 +156,7 @@ double pdf_value(const pdf *p, vec3 d)
                 sum += p->as.mixture.weights[i] * pdf_value(p->as.mixture.components[i], d);
         return sum;
     }
+    /* END SNIPPET mixture_value */
     case PDF_LIST: {
         double sum = 0.0;
         for (size_t i = 0; i < p->as.list.n; i++)
@@ -161,6 +167,7 @@ double pdf_value(const pdf *p, vec3 d)
     return 0.0;
 }
 
+/* BEGIN SNIPPET choose_component */
 /* The component a uniform u in [0, 1) selects: the first i whose running
  * weight sum exceeds u. Zero weights are never selected; if rounding leaves
  * the total a hair below u, the last positive weight takes the remainder. */
@@ -178,6 +185,7 @@ static size_t choose_component(const double *weights, size_t n, double u)
     }
     return last;
 }
+/* END SNIPPET choose_component */
 
 vec3 pdf_generate(const pdf *p, mc_rng *rng)
 {
@@ -194,6 +202,7 @@ vec3 pdf_generate(const pdf *p, mc_rng *rng)
         return quad_generate(p, rng);
     case PDF_TOWARD_SPHERE:
         return sphere_generate(p, rng);
+    /* BEGIN SNIPPET mixture_generate */
     case PDF_MIXTURE: {
         /* n == 0 is invalid (pdf_valid): no component to index; fall
          * through to the documented +z below. */
@@ -202,6 +211,7 @@ vec3 pdf_generate(const pdf *p, mc_rng *rng)
         size_t i = choose_component(p->as.mixture.weights, p->as.mixture.n, mc_rng_uniform(rng));
         return pdf_generate(p->as.mixture.components[i], rng);
     }
+    /* END SNIPPET mixture_generate */
     case PDF_LIST: {
         if (p->as.list.n == 0) /* invalid; mc_rng_bounded(rng, 0) divides by 0 */
             break;

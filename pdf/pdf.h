@@ -106,6 +106,7 @@ pdf pdf_toward_quad(vec3 origin, vec3 corner, vec3 u, vec3 v);
  * computes sqrt of a negative number there and returns NaN). */
 pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius);
 
+/* BEGIN SNIPPET pdf_mixture_decl */
 /* The mixture sum_i weights[i] * components[i] of n >= 1 pdfs. Weights
  * must be finite, >= 0 and sum to 1 (check with pdf_mixture_weights_valid
  * or pdf_valid): otherwise value() no longer integrates to 1 and every
@@ -116,6 +117,7 @@ pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius);
  * borrowed, not copied. n == 0 is invalid (pdf_valid says so); such a
  * pdf's value is 0 everywhere and generate() returns +z. */
 pdf pdf_mixture(const pdf *const *components, const double *weights, size_t n);
+/* END SNIPPET pdf_mixture_decl */
 
 /* The equal-weight mixture of 1 <= n <= UINT32_MAX pdfs (one per light):
  * generate() picks an item uniformly, value() is the average of the

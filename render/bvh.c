@@ -75,6 +75,7 @@ typedef struct split {
  * of the centroids, or bin = -1 when a leaf is cheaper (or unavoidable). */
 static split find_split(const builder *b, int start, int end, rt_aabb node_box)
 {
+    /* BEGIN SNIPPET sah_binning */
     split s = {0, -1, 0.0, 0.0};
     rt_aabb cb = rt_aabb_empty();
     for (int i = start; i < end; i++)
@@ -97,6 +98,8 @@ static split find_split(const builder *b, int start, int end, rt_aabb node_box)
         count[k]++;
         box[k] = rt_aabb_union(box[k], b->boxes[i]);
     }
+    /* END SNIPPET sah_binning */
+    /* BEGIN SNIPPET sah_sweep */
     /* Sweep from the right to get the area and count right of every
      * boundary, then from the left evaluating the cost. */
     double right_area[RT_BVH_BINS];
@@ -127,6 +130,7 @@ static split find_split(const builder *b, int start, int end, rt_aabb node_box)
     if (n <= RT_BVH_MAX_LEAF && (double)n <= best)
         s.bin = -1;
     return s;
+    /* END SNIPPET sah_sweep */
 }
 
 /* Partitions [start, end) and returns the first index of the right part. */
@@ -268,6 +272,7 @@ void rt_bvh_destroy(rt_bvh *bvh)
 /* The slab test: the ray is inside the box for t in the intersection of
  * three slabs' intervals; taking the near plane of each slab by the sign of
  * the direction avoids the min/max pair per axis. */
+/* BEGIN SNIPPET slab_test */
 static inline bool box_hit(const rt_bvh_node *nd, vec3 o, vec3 inv, const int neg[3], double tmin,
                            double tmax)
 {
@@ -282,6 +287,7 @@ static inline bool box_hit(const rt_bvh_node *nd, vec3 o, vec3 inv, const int ne
     tmax = v1 < tmax ? v1 : tmax;
     return tmin <= tmax;
 }
+/* END SNIPPET slab_test */
 
 /* The nearest quad of a leaf's packets. Each packet evaluates rt_quad_t's
  * expressions on its four lanes at once, in the same order, so the
@@ -467,6 +473,7 @@ static inline double closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, 
 {
     int best_i = -1;
     double best = tmax;
+    /* BEGIN SNIPPET bvh_traversal */
     /* A root that is a leaf (a small scene such as the Cornell box: one
      * leaf of three packets) is tested straight away, without its box:
      * the slab test only culls, so skipping it changes no answer, and a
@@ -501,6 +508,7 @@ static inline double closest(const rt_bvh *bvh, const rt_prim *prims, rt_ray r, 
             break;
         node = stack[--sp];
     }
+    /* END SNIPPET bvh_traversal */
     *index = best_i;
     return best_i >= 0 ? best : HUGE_VAL;
 }

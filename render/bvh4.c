@@ -163,6 +163,7 @@ typedef struct nearest {
 #define SUB _mm256_sub_pd
 #define MUL _mm256_mul_pd
 
+/* BEGIN SNIPPET quad_axis_lanes */
 /* (o + t d)_c - q_c: a coordinate of h in rt_quad_t. */
 AVX2 __m256d h_at(const lanes *L, __m256d t, int c, const double *q)
 {
@@ -177,6 +178,7 @@ AVX2 __m256d quad_axis(const lanes *L, const rt_quad_axis *w, __m256d *a, __m256
     *b = MUL(h_at(L, t, w->j, w->qj), LOAD(w->eb));
     return t;
 }
+/* END SNIPPET quad_axis_lanes */
 
 /* Two terms are added in either order to the same bits. */
 AVX2 __m256d quad_turned(const lanes *L, const rt_quad_turned *w, __m256d *a, __m256d *b)
@@ -229,6 +231,7 @@ AVX2 __m256d sphere(const lanes *L, const rt_sphere *s, __m256d lo, __m256d *dis
     return _mm256_blendv_pd(t2, t1, _mm256_cmp_pd(t1, lo, _CMP_GT_OQ));
 }
 
+/* BEGIN SNIPPET keep_nearest */
 /* Keeps t where the lanes of `in` (t > tmin, the point inside) are nearer
  * than the best so far: t < best, the last condition of rt_quad_t, is
  * left to a minimum, so that the chain from one primitive to the next is
@@ -240,6 +243,7 @@ AVX2 void keep(nearest *nb, __m256d t, __m256d in, __m256d prim)
     nb->i = _mm256_blendv_pd(nb->i, prim, _mm256_cmp_pd(tm, nb->t, _CMP_LT_OQ));
     nb->t = _mm256_min_pd(tm, nb->t);
 }
+/* END SNIPPET keep_nearest */
 
 /* The lanes with t > lo and a, b in [0, 1], by vector masks. */
 AVX2 __m256d inside(__m256d t, __m256d a, __m256d b, __m256d lo)
@@ -353,6 +357,7 @@ AVX2 unsigned records(const rt_bvh4 *b4, const rt_prim *prims, const lanes *L, n
 
 /* The root leaf against the four rays, each lane keeping its nearest
  * hit; then the records. */
+/* BEGIN SNIPPET hit4_avx2 */
 __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, const rt_prim *prims,
                                                          const rt_ray r[RT_BVH_LANES], double tmin,
                                                          double tmax, rt_hit h[RT_BVH_LANES])
@@ -372,6 +377,7 @@ __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, con
     }
     return records(b4, prims, &L, nb, h);
 }
+/* END SNIPPET hit4_avx2 */
 
 /* The same with AVX-512's mask registers (still four lanes of 256 bits,
  * the same arithmetic): each comparison is masked by the previous ones,
@@ -432,6 +438,7 @@ rt_bvh4_isa rt_bvh4_isa_best(void)
     return RT_BVH4_SCALAR;
 }
 
+/* BEGIN SNIPPET bvh4_dispatch */
 unsigned rt_bvh4_hit(rt_bvh4_isa isa, const rt_bvh *bvh, const rt_prim *prims,
                      const rt_ray r[RT_BVH_LANES], double tmin, double tmax, rt_hit h[RT_BVH_LANES])
 {
@@ -449,6 +456,7 @@ unsigned rt_bvh4_hit(rt_bvh4_isa isa, const rt_bvh *bvh, const rt_prim *prims,
         mask |= (unsigned)rt_bvh_hit(bvh, prims, &r[k], tmin, tmax, &h[k]) << k;
     return mask;
 }
+/* END SNIPPET bvh4_dispatch */
 
 unsigned rt_bvh_hit4(const rt_bvh *bvh, const rt_prim *prims, const rt_ray r[RT_BVH_LANES],
                      double tmin, double tmax, rt_hit h[RT_BVH_LANES])

@@ -37,6 +37,7 @@ void rt_image_clear(rt_image *img)
     memset(img->px, 0, (size_t)img->width * (size_t)img->height * sizeof *img->px);
 }
 
+/* BEGIN SNIPPET pixel_add */
 bool rt_pixel_add(rt_pixel *p, vec3 radiance)
 {
     if (!vec3_is_finite(radiance)) {
@@ -58,6 +59,7 @@ bool rt_pixel_add(rt_pixel *p, vec3 radiance)
     }
     return true;
 }
+/* END SNIPPET pixel_add */
 
 vec3 rt_image_get(const rt_image *img, int x, int y)
 {

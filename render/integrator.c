@@ -125,6 +125,7 @@ static double mixture_density(const rt_path_settings *ps, const rt_scatter *sr, 
 /* The chapter-8 mixture: one direction and the mixture density there
  * (with the negative-control scale on the light part), by the pdf objects
  * or by the fast densities (the same numbers). */
+/* BEGIN SNIPPET mixture_sample */
 static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, const rt_hit *h,
                              const rt_scatter *sr, mc_rng *rng, vec3 *dir)
 {
@@ -147,11 +148,13 @@ static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, cons
     *dir = mixture_draw(ps, sr, &at, rng);
     return mixture_density(ps, sr, *dir, rt_lights_at_value(&at, *dir));
 }
+/* END SNIPPET mixture_sample */
 
 /* --- the book's integrator ---------------------------------------------- */
 
 /* Draws the direction after a diffuse hit and returns the density it was
  * drawn with (per unit solid angle). */
+/* BEGIN SNIPPET diffuse_direction */
 static double diffuse_direction(const rt_scene *s, const rt_path_settings *ps, const rt_hit *h,
                                 const rt_scatter *sr, mc_rng *rng, vec3 *dir)
 {
@@ -167,6 +170,7 @@ static double diffuse_direction(const rt_scene *s, const rt_path_settings *ps, c
     }
     return mixture_sample(s, ps, h, sr, rng, dir);
 }
+/* END SNIPPET diffuse_direction */
 
 bool rt_path_steppable(const rt_path_settings *ps)
 {
@@ -189,6 +193,7 @@ static void path_next(const rt_path_settings *ps, rt_path_state *p, mc_rng *rng)
         p->done = true;
 }
 
+/* BEGIN SNIPPET path_scatter */
 bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
                      const rt_hit *h, mc_rng *rng, rt_path_vertex *v)
 {
@@ -219,8 +224,10 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
     v->m = m;
     return true;
 }
+/* END SNIPPET path_scatter */
 
 /* The rest of a diffuse step, along dir drawn with density pd. */
+/* BEGIN SNIPPET path_turn */
 static void path_turn(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
                       vec3 dir, double pd, mc_rng *rng)
 {
@@ -235,6 +242,7 @@ static void path_turn(const rt_path_settings *ps, rt_path_state *p, const rt_pat
     p->ray = rt_ray_make(v->p, dir);
     path_next(ps, p, rng);
 }
+/* END SNIPPET path_turn */
 
 void rt_path_continue(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
                       const rt_path_vertex *v, mc_rng *rng)
@@ -298,6 +306,7 @@ static vec3 arriving(const rt_scene *s, rt_ray r, uint64_t *segments)
  * 1 instead of inf/inf = NaN, and a huge ratio overflows to weight 0
  * rather than to NaN. a == 0: that strategy could not have drawn the
  * direction, so it gets nothing. */
+/* BEGIN SNIPPET power_weight */
 static double power_weight(double a, double b)
 {
     if (!(a > 0.0))
@@ -307,10 +316,12 @@ static double power_weight(double a, double b)
     double r = b / a;
     return 1.0 / (1.0 + r * r);
 }
+/* END SNIPPET power_weight */
 
 /* The weight of light found by continuing the path from `from` along dir,
  * drawn by the material with density p_mat, when the light list could also
  * have sent a shadow ray there. */
+/* BEGIN SNIPPET continued_weight */
 static double continued_weight(const rt_scene *s, const rt_path_settings *ps, vec3 from, vec3 dir,
                                double p_mat)
 {
@@ -321,9 +332,11 @@ static double continued_weight(const rt_scene *s, const rt_path_settings *ps, ve
         return pl > 0.0 ? 0.0 : 1.0;
     return power_weight(p_mat, pl);
 }
+/* END SNIPPET continued_weight */
 
 /* The shadow-ray estimate of light arriving at the diffuse hit h directly,
  * already multiplied by the BRDF cosine and the MIS weight. */
+/* BEGIN SNIPPET direct_light */
 static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt_material *m,
                          const rt_hit *h, const rt_scatter *sr, mc_rng *rng, uint64_t *segments)
 {
@@ -345,6 +358,7 @@ static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt
     }
     return vec3_scale(vec3_mul(sr->attenuation, le), sp * w / pl);
 }
+/* END SNIPPET direct_light */
 
 static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
                          uint64_t *segments)
@@ -353,6 +367,7 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
     bool after_diffuse = false;
     vec3 prev_p = r.origin;
     double prev_pm = 0.0;
+    /* BEGIN SNIPPET nee_loop */
     for (int depth = 0; depth < ps->max_depth; depth++) {
         rt_hit h;
         ++*segments;
@@ -389,6 +404,7 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
         if (ps->russian_roulette && !roulette(ps, depth, &beta, rng))
             break;
     }
+    /* END SNIPPET nee_loop */
     return L;
 }
 

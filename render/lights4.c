@@ -357,6 +357,7 @@ void rt_lights4_prepare_isa(rt_lights4_isa isa, rt_lights4 *at, const rt_light *
     }
 }
 
+/* BEGIN SNIPPET lights4_value_isa */
 void rt_lights4_value_isa(rt_lights4_isa isa, const rt_lights4 *at, const vec3 d[RT_LIGHTS4_LANES],
                           double out[RT_LIGHTS4_LANES])
 {
@@ -378,6 +379,7 @@ void rt_lights4_value_isa(rt_lights4_isa isa, const rt_lights4 *at, const vec3 d
         out[k] = rt_lights_at_value(&one, d[k]);
     }
 }
+/* END SNIPPET lights4_value_isa */
 
 void rt_lights4_prepare(rt_lights4 *at, const rt_light *lights, int n,
                         const vec3 origin[RT_LIGHTS4_LANES])

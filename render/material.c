@@ -35,6 +35,7 @@ rt_material rt_diffuse_light(vec3 emission)
 
 vec3 rt_reflect(vec3 d, vec3 n) { return vec3_madd(d, n, -2.0 * vec3_dot(d, n)); }
 
+/* BEGIN SNIPPET refract */
 bool rt_refract(vec3 d, vec3 n, double eta, vec3 *out)
 {
     double cos_i = -vec3_dot(d, n);
@@ -50,6 +51,7 @@ bool rt_refract(vec3 d, vec3 n, double eta, vec3 *out)
     *out = vec3_madd(perp, n, -sqrt(1.0 - sin2_t));
     return true;
 }
+/* END SNIPPET refract */
 
 /* cos theta_t from cos theta_i by Snell's law with eta = n1 / n2; -1
  * under total internal reflection. */
@@ -64,6 +66,7 @@ static double transmitted_cos(double cos_i, double n1, double n2)
     return transmitted_cos_eta(cos_i, n1 / n2);
 }
 
+/* BEGIN SNIPPET fresnel_exact */
 double rt_fresnel_exact(double cos_i, double n1, double n2)
 {
     double cos_t = transmitted_cos(cos_i, n1, n2);
@@ -75,7 +78,9 @@ double rt_fresnel_exact(double cos_i, double n1, double n2)
     double rp = (n1 * cos_t - n2 * cos_i) / (n1 * cos_t + n2 * cos_i);
     return 0.5 * (rs * rs + rp * rp);
 }
+/* END SNIPPET fresnel_exact */
 
+/* BEGIN SNIPPET fresnel_schlick */
 static double schlick(double r0, double c)
 {
     double m = 1.0 - c;
@@ -109,6 +114,7 @@ double rt_fresnel_schlick_book(double cos_i, double n1, double n2)
 {
     return transmitted_cos(cos_i, n1, n2) < 0.0 ? 1.0 : schlick(schlick_r0(n1, n2), cos_i);
 }
+/* END SNIPPET fresnel_schlick */
 
 /* Glass: reflect with the probability of the Fresnel reflectance, refract
  * otherwise. Choosing by that probability makes the weight of either
@@ -124,6 +130,7 @@ double rt_fresnel_schlick_book(double cos_i, double n1, double n2)
  * reflection (transmitted_cos_eta's test); the exactly grazing 1 refracts
  * along the surface in rt_refract (cos theta_t = sqrt(0) = 0), hence the
  * 0 there. */
+/* BEGIN SNIPPET scatter_glass */
 static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *h, mc_rng *rng,
                           rt_scatter *s)
 {
@@ -156,6 +163,7 @@ static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *
      * path that is inside glass every few segments. */
     s->ray = rt_ray_make(h->p, vec3_scale(dir, 1.5 - 0.5 * vec3_length_sq(dir)));
 }
+/* END SNIPPET scatter_glass */
 
 bool rt_material_scatter_specular(const rt_material *m, const rt_ray *in, const rt_hit *h,
                                   mc_rng *rng, rt_scatter *s)

@@ -61,6 +61,7 @@ rt_material rt_diffuse_light(vec3 emission);
  * density is the cosine pdf about `normal` (rt_scatter_pdf builds it as a
  * pdf object); for a specular one, `ray` is the scattered ray and the
  * estimator is simply attenuation times what comes back along it. */
+/* BEGIN SNIPPET scatter_record */
 typedef struct rt_scatter {
     bool specular;
     vec3 attenuation; /* albedo (diffuse) or the specular colour */
@@ -71,6 +72,7 @@ typedef struct rt_scatter {
 /* The scattering density of a diffuse record as a pdf object:
  * pdf_cosine(s->normal), per unit solid angle. */
 static inline pdf rt_scatter_pdf(const rt_scatter *s) { return pdf_cosine(s->normal); }
+/* END SNIPPET scatter_record */
 
 /* Radiance emitted toward the ray that produced h: m->emission on the
  * front face, 0 on the back. */

@@ -64,6 +64,7 @@ static uint64_t mulmod(uint64_t a, uint64_t b, uint64_t m)
     return r;
 }
 
+/* BEGIN SNIPPET jitter_make */
 static jitter jitter_make(uint64_t spp)
 {
     size_t sx, sy;
@@ -83,6 +84,7 @@ static jitter jitter_make(uint64_t spp)
     j.stride_j = s / j.sx;
     return j;
 }
+/* END SNIPPET jitter_make */
 
 /* A coordinate in [0, 1) from cell i of n and a uniform u. */
 static double in_cell(uint64_t i, uint64_t n, double u)
@@ -100,6 +102,7 @@ __attribute__((always_inline))
 static inline rt_ray sample_ray(const rt_render_job *job, const jitter *jt, int x, int y, uint64_t k,
                                 cell *c, mc_rng *rng)
 {
+    /* BEGIN SNIPPET sample_ray */
     double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng), jx = u1, jy = u2;
     if (k < jt->m) {
         jx = in_cell(c->i, jt->sx, u1);
@@ -113,9 +116,11 @@ static inline rt_ray sample_ray(const rt_render_job *job, const jitter *jt, int 
         c->j = j >= jt->sy ? j - jt->sy : j;
     }
     return rt_camera_ray(&job->camera, (double)x + jx, (double)y + jy);
+    /* END SNIPPET sample_ray */
 }
 
 /* Samples [k0, k1) of every pixel of row y; c0 is the cell of sample k0. */
+/* BEGIN SNIPPET render_row */
 static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams, const jitter *jt,
                        int y, uint64_t k0, uint64_t k1, cell c0, uint64_t *segments,
                        uint64_t *dropped)
@@ -135,6 +140,7 @@ static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams,
         streams[idx] = rng;
     }
 }
+/* END SNIPPET render_row */
 
 /* One lane of render_row4: the pixel it works on, that pixel's stream and
  * next sample, and the path of the current sample. */
@@ -165,6 +171,7 @@ static void lane_take(lane *l, const rt_render_job *job, const jitter *jt, mc_rn
  * a lane without a vertex this step goes through with the vertex and
  * direction it had last (or the initial ones), which are finite and whose
  * densities nobody reads: lanes never mix. */
+/* BEGIN SNIPPET turn_diffuse */
 static void turn_diffuse(const rt_render_job *job, lane *lanes, const rt_path_vertex *verts,
                          vec3 *dirs, unsigned diffuse)
 {
@@ -189,6 +196,7 @@ static void turn_diffuse(const rt_render_job *job, lane *lanes, const rt_path_ve
         if ((diffuse >> i) & 1u)
             rt_path_finish(&job->path, &lanes[i].path, &verts[i], dirs[i], values[i], &lanes[i].rng);
 }
+/* END SNIPPET turn_diffuse */
 
 /* render_row for the book's integrator, RT_BVH_LANES paths at a time:
  * each lane takes a pixel and traces its samples one after the other,
@@ -286,6 +294,7 @@ static void render_pass(const rt_render_job *job, rt_image *img, mc_rng *streams
     cell c0 = cell_of(jt, k0 < jt->m ? mulmod(k0, jt->stride, jt->m) : 0);
     int next_row = 0, nt = job->threads > 0 ? job->threads : omp_get_max_threads();
     uint64_t total = job->spp * (uint64_t)img->width * (uint64_t)img->height;
+    /* BEGIN SNIPPET render_pass_rows */
 #pragma omp parallel num_threads(nt)
     for (;;) {
         int y;
@@ -303,6 +312,7 @@ static void render_pass(const rt_render_job *job, rt_image *img, mc_rng *streams
             render_row4(job, img, streams, jt, y, k0, k1, c0, &seg, &drop);
         else
             render_row(job, img, streams, jt, y, k0, k1, c0, &seg, &drop);
+        /* END SNIPPET render_pass_rows */
 #pragma omp atomic
         tot->segments += seg;
 #pragma omp atomic
@@ -328,6 +338,7 @@ int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
     if (!job->scene || job->spp < 1 || job->camera.width != img->width ||
         job->camera.height != img->height || job->path.max_depth < 0)
         return -1;
+    /* BEGIN SNIPPET render_streams */
     size_t npix = (size_t)img->width * (size_t)img->height;
     mc_rng *streams = malloc(npix * sizeof *streams);
     if (!streams)
@@ -348,6 +359,7 @@ int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
         render_pass(job, img, streams, &jt, k0, k1, &tot);
         k0 = k1;
     }
+    /* END SNIPPET render_streams */
     free(streams);
     if (stats) {
         stats->paths = tot.paths;

@@ -10,6 +10,7 @@ const char *const rt_scene_names[] = {"book", "book-metal", "lambert", "furnace"
 
 static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
 
+/* BEGIN SNIPPET cornell_room */
 int rt_scene_cornell_room(rt_scene *s, rt_camera_params *cam)
 {
     int red = rt_scene_add_material(s, rt_lambertian(v3(0.65, 0.05, 0.05)));
@@ -31,6 +32,7 @@ int rt_scene_cornell_room(rt_scene *s, rt_camera_params *cam)
     cam->vfov_deg = 40.0;
     return white;
 }
+/* END SNIPPET cornell_room */
 
 /* A box [0, size] turned about y, then moved. */
 static rt_object placed_box(rt_scene *s, vec3 size, double degrees, vec3 offset, int material)
@@ -39,6 +41,7 @@ static rt_object placed_box(rt_scene *s, vec3 size, double degrees, vec3 offset,
     return rt_scene_translate(s, rt_scene_rotate_y(s, box, degrees), offset);
 }
 
+/* BEGIN SNIPPET cornell_book_scene */
 static rt_scene *cornell(bool metal, bool lambert, rt_camera_params *cam)
 {
     rt_scene *s = rt_scene_create();
@@ -61,7 +64,9 @@ static rt_scene *cornell(bool metal, bool lambert, rt_camera_params *cam)
     }
     return s;
 }
+/* END SNIPPET cornell_book_scene */
 
+/* BEGIN SNIPPET furnace_scene */
 rt_scene *rt_scene_furnace(double emission, double rho, rt_camera_params *cam)
 {
     rt_scene *s = rt_scene_create();
@@ -86,6 +91,7 @@ rt_scene *rt_scene_furnace(double emission, double rho, rt_camera_params *cam)
     }
     return s;
 }
+/* END SNIPPET furnace_scene */
 
 rt_scene *rt_scene_sphere_light(double phi, double r, double h, double half, double rho,
                                 rt_camera_params *cam)
@@ -93,6 +99,7 @@ rt_scene *rt_scene_sphere_light(double phi, double r, double h, double half, dou
     rt_scene *s = rt_scene_create();
     if (!s)
         return NULL;
+    /* BEGIN SNIPPET sphere_light_scene */
     /* Flux of a sphere of uniform radiance L: each point emits pi L per
      * unit area (the cosine integrated over the hemisphere), so
      * Phi = 4 pi r^2 pi L. */
@@ -105,6 +112,7 @@ rt_scene *rt_scene_sphere_light(double phi, double r, double h, double half, dou
     rt_object lamp = rt_scene_sphere(s, v3(0, h, 0), r, lamp_mat);
     rt_scene_add(s, lamp);
     rt_scene_add_light(s, lamp);
+    /* END SNIPPET sphere_light_scene */
     cam->lookfrom = v3(0, 500, -700);
     cam->lookat = v3(0, 0, 0);
     cam->vup = v3(0, 1, 0);

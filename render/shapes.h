@@ -58,6 +58,7 @@ rt_sphere rt_sphere_make(vec3 center, double radius, double orient);
  * the mispredicted branches of early exits. A ray parallel to the plane
  * gets t = +-inf or NaN (0 / 0 for a ray inside it), which every range
  * test below rejects. */
+/* BEGIN SNIPPET quad_t_scalar */
 static inline double rt_quad_t(const rt_quad *s, rt_ray r, double tmin, double tmax)
 {
     double t = (s->plane - vec3_dot(s->normal, r.origin)) / vec3_dot(s->normal, r.dir);
@@ -69,6 +70,7 @@ static inline double rt_quad_t(const rt_quad *s, rt_ray r, double tmin, double t
     int ok = (t > tmin) & (t < tmax) & (a >= 0.0) & (a <= 1.0) & (b >= 0.0) & (b <= 1.0);
     return ok ? t : HUGE_VAL;
 }
+/* END SNIPPET quad_t_scalar */
 
 /* Distance to the sphere along r within (tmin, tmax), or HUGE_VAL: the
  * nearer root of |o + t d - c|^2 = R^2 (|d| = 1) that is in range, else

@@ -7,6 +7,7 @@
 #include "mc/trig.h"
 #include "samplers/spherical.h"
 
+/* BEGIN SNIPPET uniform_cap */
 /* 1 - w.z for a unit w. Near the axis 1 - z cancels (z is 1 rounded); the
  * identity 1 - z = (1 - z^2) / (1 + z) = (x^2 + y^2) / (1 + z) carries the
  * full relative accuracy of x and y instead. Below the equator 1 - z >= 1
@@ -41,7 +42,9 @@ vec2 smp_uniform_cap_invert(vec3 w, double one_minus_cos)
 {
     return vec2_make(smp_spherical_phi(w) * MC_INV_2PI, one_minus_z(w) / one_minus_cos);
 }
+/* END SNIPPET uniform_cap */
 
+/* BEGIN SNIPPET uniform_cone */
 vec3 smp_uniform_cone_sample(double u1, double u2, double cos_theta_max)
 {
     return smp_uniform_cap_sample(u1, u2, 1.0 - cos_theta_max);
@@ -56,7 +59,9 @@ vec2 smp_uniform_cone_invert(vec3 w, double cos_theta_max)
 {
     return smp_uniform_cap_invert(w, 1.0 - cos_theta_max);
 }
+/* END SNIPPET uniform_cone */
 
+/* BEGIN SNIPPET sphere_cone_cap */
 double smp_sphere_cone_cap(double dist_sq, double radius, double *cos_theta_max)
 {
     double r2 = radius * radius;
@@ -75,6 +80,7 @@ double smp_sphere_cone_cap(double dist_sq, double radius, double *cos_theta_max)
      * 1 + cos in [1, 2]), where 1 - cos subtracts two nearly equal ones. */
     return (r2 / dist_sq) / (1.0 + c);
 }
+/* END SNIPPET sphere_cone_cap */
 
 double smp_sphere_cone_cos_theta_max(double dist_sq, double radius)
 {

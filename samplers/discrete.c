@@ -19,6 +19,7 @@ static double weight_sum(const double *w, size_t n)
 
 /* --- CDF table --------------------------------------------------------- */
 
+/* BEGIN SNIPPET cdf_table_init */
 bool smp_discrete_cdf_init(smp_discrete_cdf *d, const double *weights, size_t n, double *storage)
 {
     double sum = n > 0 ? weight_sum(weights, n) : -1.0;
@@ -42,7 +43,9 @@ bool smp_discrete_cdf_init(smp_discrete_cdf *d, const double *weights, size_t n,
     d->n = n;
     return true;
 }
+/* END SNIPPET cdf_table_init */
 
+/* BEGIN SNIPPET cdf_table_sample */
 size_t smp_discrete_cdf_sample(const smp_discrete_cdf *d, double u, double *u_remapped)
 {
     /* Invariant: the answer lies in [lo, hi]; cdf[n-1] = 1 > u. Ties
@@ -63,6 +66,7 @@ size_t smp_discrete_cdf_sample(const smp_discrete_cdf *d, double u, double *u_re
     }
     return lo;
 }
+/* END SNIPPET cdf_table_sample */
 
 double smp_discrete_cdf_pmf(const smp_discrete_cdf *d, size_t k)
 {
@@ -102,6 +106,7 @@ bool smp_alias_init(smp_alias *a, const double *weights, size_t n, smp_alias_cel
     double sum = n > 0 ? weight_sum(weights, n) : -1.0;
     if (!(sum > 0.0))
         return false;
+    /* BEGIN SNIPPET alias_build */
     smp_alias_cell *c = storage;
     const size_t none = n;
     size_t small = none, large = none, positive = 0;
@@ -135,11 +140,13 @@ bool smp_alias_init(smp_alias *a, const double *weights, size_t n, smp_alias_cel
         c[s].threshold = c[s].pmf > 0.0 ? 1.0 : 0.0;
         c[s].alias = c[s].pmf > 0.0 ? s : positive;
     }
+    /* END SNIPPET alias_build */
     a->cells = c;
     a->n = n;
     return true;
 }
 
+/* BEGIN SNIPPET alias_sample */
 size_t smp_alias_sample(const smp_alias *a, double u, double *u_remapped)
 {
     double un = u * (double)a->n;
@@ -155,6 +162,7 @@ size_t smp_alias_sample(const smp_alias *a, double u, double *u_remapped)
     }
     return keep ? k : c->alias;
 }
+/* END SNIPPET alias_sample */
 
 double smp_alias_pmf(const smp_alias *a, size_t k)
 {

@@ -10,6 +10,7 @@
 #include "mc/constants.h"
 #include "samplers/spherical.h"
 
+/* BEGIN SNIPPET phong_lobe */
 vec3 smp_phong_lobe_sample(double u1, double u2, double n)
 {
     /* In z = cos theta the marginal is (n+1) z^n on [0, 1], CDF z^(n+1);
@@ -29,7 +30,9 @@ vec2 smp_phong_lobe_invert(vec3 w, double n)
 {
     return vec2_make(smp_spherical_phi(w) * MC_INV_2PI, 1.0 - pow(w.z, n + 1.0));
 }
+/* END SNIPPET phong_lobe */
 
+/* BEGIN SNIPPET ggx */
 vec3 smp_ggx_sample(double u1, double u2, double alpha)
 {
     /* With t = tan^2 theta, cos^2 (alpha^2 - 1) + 1 = cos^2 (alpha^2 + t) and
@@ -58,3 +61,4 @@ vec2 smp_ggx_invert(vec3 h, double alpha)
     double a2 = alpha * alpha, c2 = h.z * h.z;
     return vec2_make(smp_spherical_phi(h) * MC_INV_2PI, (1.0 - c2) / (c2 * (a2 - 1.0) + 1.0));
 }
+/* END SNIPPET ggx */

@@ -35,6 +35,7 @@ vec2 smp_unit_square_invert(vec2 p)
     return p;
 }
 
+/* BEGIN SNIPPET disc_polar */
 vec2 smp_disc_polar_sample(double u1, double u2)
 {
     /* The area within radius r is pi r^2: P(R <= r) = r^2 = u2. */
@@ -58,7 +59,9 @@ vec2 smp_disc_polar_invert(vec2 p)
     return vec2_make(smp_spherical_phi(vec3_make(p.x, p.y, 0.0)) * MC_INV_2PI,
                      p.x * p.x + p.y * p.y);
 }
+/* END SNIPPET disc_polar */
 
+/* BEGIN SNIPPET disc_concentric_sample */
 vec2 smp_disc_concentric_sample(double u1, double u2)
 {
     double a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0;
@@ -79,12 +82,14 @@ vec2 smp_disc_concentric_sample(double u1, double u2)
     }
     return vec2_make(r * cos(phi), r * sin(phi));
 }
+/* END SNIPPET disc_concentric_sample */
 
 double smp_disc_concentric_pdf(vec2 p)
 {
     return disc_pdf(p);
 }
 
+/* BEGIN SNIPPET disc_concentric_invert */
 vec2 smp_disc_concentric_invert(vec2 p)
 {
     double r = sqrt(p.x * p.x + p.y * p.y);
@@ -107,7 +112,9 @@ vec2 smp_disc_concentric_invert(vec2 p)
     }
     return vec2_make(0.5 * (a + 1.0), 0.5 * (b + 1.0));
 }
+/* END SNIPPET disc_concentric_invert */
 
+/* BEGIN SNIPPET triangle */
 vec2 smp_triangle_sample(double u1, double u2)
 {
     /* The marginal of x is 2 (1 - x) (the chord length at x, normalized), so
@@ -126,6 +133,7 @@ vec2 smp_triangle_invert(vec2 p)
     double s = 1.0 - p.x;
     return vec2_make(s * s, s > 0.0 ? p.y / s : 0.5);
 }
+/* END SNIPPET triangle */
 
 /* The out-of-plane tolerance of the parallelogram and sphere-surface pdfs
  * (documented in planar.h): far above the ~1e-16 relative round-off of a

@@ -11,6 +11,7 @@
 #include "mc/trig.h"
 #include "samplers/spherical.h"
 
+/* BEGIN SNIPPET sphere_inverse */
 vec3 smp_uniform_sphere_sample(double u1, double u2)
 {
     /* Archimedes: the band between heights z and z + dz has area 2 pi dz for
@@ -28,7 +29,9 @@ vec2 smp_uniform_sphere_invert(vec3 w)
 {
     return vec2_make(smp_spherical_phi(w) * MC_INV_2PI, 0.5 * (1.0 - w.z));
 }
+/* END SNIPPET sphere_inverse */
 
+/* BEGIN SNIPPET sphere_gaussian */
 /* Two standard normals from two uniforms (Box-Muller): the radius has
  * P(R > r) = exp(-r^2 / 2), inverted as r = sqrt(-2 ln(1 - u)); 1 - u is in
  * (0, 1] so the logarithm is finite. */
@@ -52,7 +55,9 @@ vec3 smp_uniform_sphere_sample_gaussian(double u1, double u2, double u3, double 
         return vec3_make(0.0, 0.0, 1.0);
     return vec3_make(x / len, y / len, z / len);
 }
+/* END SNIPPET sphere_gaussian */
 
+/* BEGIN SNIPPET sphere_rejection */
 vec3 smp_uniform_sphere_sample_rejection(mc_rng *rng)
 {
     /* Accepted points are uniform in the ball, whose density depends on |p|
@@ -70,3 +75,4 @@ vec3 smp_uniform_sphere_sample_rejection(mc_rng *rng)
         }
     }
 }
+/* END SNIPPET sphere_rejection */

@@ -26,6 +26,7 @@ static inline vec3 smp_spherical_direction(double cos_theta, double phi)
     return vec3_make(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
 }
 
+/* BEGIN SNIPPET spherical_direction_turn */
 /* The same direction with azimuth phi = 2 pi u, u a fraction of a turn
  * (the samplers' u in [0, 1)). mc_sincos_turn reduces u exactly, which
  * makes this both cheaper than cos and sin of the product 2 pi u and more
@@ -40,6 +41,7 @@ static inline vec3 smp_spherical_direction_turn(double cos_theta, double u)
     mc_sincos_turn(u, &s, &c);
     return vec3_make(sin_theta * c, sin_theta * s, cos_theta);
 }
+/* END SNIPPET spherical_direction_turn */
 
 /* The azimuth of w in [0, 2 pi); 0 on the z axis. */
 static inline double smp_spherical_phi(vec3 w)

@@ -14,6 +14,7 @@ static double clamp01(double u)
     return u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
 }
 
+/* BEGIN SNIPPET warp_linear */
 /* --- linear: p = x/2 on [0, 2], P = x^2/4, so x = sqrt(4u) ------------- */
 
 double smp_linear_sample(double u)
@@ -30,7 +31,9 @@ double smp_linear_invert(double x)
 {
     return x <= 0.0 ? 0.0 : (x >= 2.0 ? 1.0 : 0.25 * x * x);
 }
+/* END SNIPPET warp_linear */
 
+/* BEGIN SNIPPET warp_quadratic */
 /* --- quadratic: p = 3x^2/8 on [0, 2], P = x^3/8, so x = cbrt(8u) = 2 cbrt(u) */
 
 double smp_quadratic_sample(double u)
@@ -47,7 +50,9 @@ double smp_quadratic_invert(double x)
 {
     return x <= 0.0 ? 0.0 : (x >= 2.0 ? 1.0 : 0.125 * x * x * x);
 }
+/* END SNIPPET warp_quadratic */
 
+/* BEGIN SNIPPET warp_sine */
 /* --- sine: p = sin(x)/2 on [0, pi], P = (1 - cos x)/2, x = acos(1 - 2u) - */
 
 double smp_sine_sample(double u)
@@ -71,6 +76,7 @@ double smp_sine_invert(double x)
     double s = sin(0.5 * x);
     return s * s;
 }
+/* END SNIPPET warp_sine */
 
 /* --- log_ends ----------------------------------------------------------- */
 
@@ -110,6 +116,7 @@ static double neglog_cdf(double t)
     return t <= 0.0 ? 0.0 : (t >= 1.0 ? 1.0 : t * (1.0 - log(t)));
 }
 
+/* BEGIN SNIPPET log_ends_sample_pdf */
 double smp_log_ends_sample(double u)
 {
     /* The left half takes u < 1/2 (t = P^-1(2u), x = t pi/2), the right half
@@ -131,6 +138,7 @@ double smp_log_ends_pdf(double x)
     double p = -log(d / MC_PI_2) * MC_INV_PI;
     return p > 0.0 ? p : 0.0;
 }
+/* END SNIPPET log_ends_sample_pdf */
 
 double smp_log_ends_invert(double x)
 {

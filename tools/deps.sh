@@ -13,7 +13,8 @@ fi
 if [ "$quick" = 1 ] && command -v pkg-config >/dev/null 2>&1 &&
    pkg-config --exists cmocka gsl libpng 2>/dev/null &&
    command -v cc >/dev/null 2>&1 && command -v gnuplot >/dev/null 2>&1 &&
-   command -v pandoc >/dev/null 2>&1; then
+   command -v pandoc >/dev/null 2>&1 &&
+   [ -f /usr/share/texmf/fonts/opentype/public/tex-gyre-math/texgyrepagella-math.otf ]; then
     exit 0
 fi
 missing=""

@@ -65,6 +65,7 @@ struct warp_entry {
 
 static const char QUAD_PARAMS[] = "corner=-0.5,-0.5,1 u=1,0,0 v=0,1,0";
 
+/* BEGIN SNIPPET warp_entries */
 static const warp_entry entries[] = {
     PLANE("square", "unit-square", G_IDENTITY, smp_unit_square_sample, smp_unit_square_pdf),
     PLANE("disc-polar", "unit-disc", G_DISC, smp_disc_polar_sample, smp_disc_polar_pdf),
@@ -106,6 +107,7 @@ static const warp_entry entries[] = {
     SPECIAL("mixture", "sphere(from-origin)", "solid-angle",
             "w=0.5 corner=-0.5,-0.5,1 u=1,0,0 v=0,1,0", WARP_DIRECTION, K_PDF, G_DIRECTION, 0.0),
 };
+/* END SNIPPET warp_entries */
 
 size_t warp_count(void)
 {

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+/* BEGIN SNIPPET negctl_record */
 bool negctl_record(negctl *t, const char *name, const char *check, bool caught)
 {
     t->ran++;
@@ -19,6 +20,7 @@ int negctl_report(const negctl *t)
     fflush(stdout);
     return t->caught == t->ran ? 0 : -1;
 }
+/* END SNIPPET negctl_record */
 
 int negctl_group_setup(void **state)
 {

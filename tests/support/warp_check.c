@@ -169,6 +169,7 @@ static bool default_support(vec3 x, const warp_case *c)
     return false;
 }
 
+/* BEGIN SNIPPET warp_domain_one */
 static void check_one(const warp_case *c, vec3 x, warp_domain *d)
 {
     bool bad = false;
@@ -196,6 +197,7 @@ static void check_one(const warp_case *c, vec3 x, warp_domain *d)
     if (bad && d->not_finite + d->not_unit + d->outside + d->zero_pdf == 1)
         d->example = x;
 }
+/* END SNIPPET warp_domain_one */
 
 warp_domain warp_check_domain(const warp_case *c, uint64_t n, uint64_t seed)
 {
@@ -225,6 +227,7 @@ bool warp_domain_ok(const warp_domain *d)
 
 /* --- round trip --------------------------------------------------------- */
 
+/* BEGIN SNIPPET warp_roundtrip */
 static double rt_one(const warp_case *c, double u1, double u2)
 {
     vec3 x = c->sample(u1, u2, c);
@@ -249,6 +252,7 @@ double warp_roundtrip_error(const warp_case *c, int g)
             worst = fmax(worst, rt_one(c, near_edge[i], near_edge[j]));
     return worst;
 }
+/* END SNIPPET warp_roundtrip */
 
 /* --- agreement ---------------------------------------------------------- */
 
