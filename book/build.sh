@@ -104,9 +104,12 @@ sort -u "$STATE/used-files" | xargs -r -P "$jobs_max" -I{} bash -c 'source_page 
     cat book/index.md
     printf '\n::: {.contents}\n'
     for ch in "${chapters[@]}"; do
-        printf -- '- [%s](%s.html) [%s]{.summary}\n' "$(title_of "$ch")" "$(stem_of "$ch")" "$(summary_of "$ch")"
+        num=$((10#$(stem_of "$ch" | cut -d- -f1)))
+        [ "$num" = 99 ] && num=A
+        printf -- '- [%s]{.number} [%s](%s.html) [%s]{.summary}\n' "$num" "$(title_of "$ch")" \
+            "$(stem_of "$ch")" "$(summary_of "$ch")"
     done
-    printf ':::\n'
+    printf ':::\n\nThe whole book as one file, for a reader: [mcbox.epub](mcbox.epub).\n'
 } | pandoc --fail-if-warnings -f markdown -t html5 -s --template book/template.html \
     -M "pagetitle=Contents" -V root= -o "$OUT/index.html"
 
