@@ -7,7 +7,11 @@
  *   build/bin/cornell_box --scene lambert --strategy uniform -o uniform.pfm
  * Prints the image's mean linear RGB (standard errors from the per-pixel
  * variances), the paths, ray segments and dropped non-finite samples, and
- * the time. Ctrl-C writes the image rendered so far and exits with 130.
+ * the time. Ctrl-C (SIGINT), SIGTERM and SIGHUP write the image rendered so
+ * far and exit with 128 + the signal's number (130 for Ctrl-C). The image
+ * goes to a temporary file beside the target, renamed over it only when
+ * complete: whatever stops the program, the target holds either the
+ * previous image or a complete new one.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -17,24 +21,25 @@
 #include <signal.h>
 #include <stdatomic.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/outfile.h"
 #include "render/render.h"
 #include "render/scenes.h"
 
 static const char *const prog = "cornell_box";
-static atomic_int interrupted; /* set by SIGINT, polled by the renderer */
+static atomic_int interrupted; /* the signal that stopped us, polled by the renderer */
 
 /* C17 7.14.1.1 allows a handler to touch only lock-free atomics: an
  * atomic_int that needed a lock could deadlock against the interrupted
  * thread. Require it to be always lock-free, not just sometimes. */
-_Static_assert(ATOMIC_INT_LOCK_FREE == 2, "the SIGINT handler needs a lock-free atomic_int");
+_Static_assert(ATOMIC_INT_LOCK_FREE == 2, "the signal handler needs a lock-free atomic_int");
 
-static void on_sigint(int sig)
+static void on_stop_signal(int sig)
 {
-    (void)sig;
-    atomic_store(&interrupted, 1);
+    atomic_store(&interrupted, sig);
 }
 
 typedef struct options {
@@ -68,6 +73,24 @@ static options parse(int argc, char **argv)
         app_fail(prog, "--spp %llu is too many for a %dx%d image", (unsigned long long)o.spp, o.width,
                  o.width);
     return o;
+}
+
+/* Refuses (exit 2) an image whose buffers would not fit: the pixels
+ * (Welford sums), one generator per pixel, the 8-bit rows of a PNG, and
+ * 64 MB for the scene, the threads and the libraries. The limit is the
+ * physical memory, or the address-space limit when that is lower: past
+ * either, calloc fails late or the machine swaps for hours. */
+static void check_memory(const options *o)
+{
+    double pixels = (double)o->width * (double)o->width;
+    double need = pixels * (double)(sizeof(rt_pixel) + sizeof(mc_rng) + 3) + 64e6;
+    double have = (double)sysconf(_SC_PHYS_PAGES) * (double)sysconf(_SC_PAGE_SIZE);
+    struct rlimit rl;
+    if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (double)rl.rlim_cur < have)
+        have = (double)rl.rlim_cur;
+    if (have > 0.0 && need > have)
+        app_fail(prog, "--width %d needs about %.2f GB of memory, more than the %.2f GB available",
+                 o->width, need * 1e-9, have * 1e-9);
 }
 
 /* The progress line: percent, elapsed, estimated time left, throughput. */
@@ -109,21 +132,27 @@ int main(int argc, char **argv)
      * one delivery, and a second Ctrl-C would then kill us mid-write.
      * SA_RESTART keeps a write(2) in progress from failing with EINTR. */
     struct sigaction sa = {0};
-    sa.sa_handler = on_sigint;
+    sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
     sa.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &sa, NULL);
+    /* SIGTERM is what timeout(1) and batch schedulers send, SIGHUP what a
+     * closed terminal sends: both deserve the image so far, like Ctrl-C. */
+    static const int stop_signals[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++)
+        sigaction(stop_signals[i], &sa, NULL);
     options o = parse(argc, argv);
     rt_format format = rt_format_from_path(o.out);
     if (format == RT_FORMAT_UNKNOWN)
         app_fail(prog, "-o %s: the extension must be .png, .ppm or .pfm", o.out);
-    FILE *f = fopen(o.out, "wb");
-    if (!f)
+    check_memory(&o);
+    app_outfile out;
+    if (!app_outfile_open(&out, o.out))
         app_fail(prog, "cannot write '%s': %s", o.out, strerror(errno));
     rt_camera_params cp;
     rt_scene *scene = rt_scene_named(o.scene, &cp);
     rt_image *img = rt_image_create(o.width, o.width);
     if (!scene || !img) {
+        app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
     }
@@ -143,21 +172,28 @@ int main(int argc, char **argv)
     job.progress_ctx = clock;
     rt_render_stats st;
     if (rt_render(&job, img, &st) < 0) {
+        app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
     }
     if (tty)
         fputc('\n', stderr);
-    if (rt_image_write(img, f, format, gamma) != 0 || fclose(f) != 0) {
-        fprintf(stderr, "%s: error writing '%s'\n", prog, o.out);
+    errno = 0;
+    if (rt_image_write(img, out.f, format, gamma) != 0 || !app_outfile_commit(&out)) {
+        int e = errno;
+        app_outfile_abort(&out);
+        fprintf(stderr, "%s: error writing '%s'%s%s; it was left as it was\n", prog, o.out,
+                e ? ": " : "", e ? strerror(e) : "");
         return 1;
     }
     report(&o, img, &st);
+    int sig = atomic_load(&interrupted);
     if (st.cancelled)
-        fprintf(stderr, "%s: interrupted: %s holds %llu samples (%.2f per pixel of the %llu asked)\n",
-                prog, o.out, (unsigned long long)st.paths, (double)st.paths / ((double)o.width * o.width),
+        fprintf(stderr, "%s: %s: %s holds %llu samples (%.2f per pixel of the %llu asked)\n",
+                prog, sig == SIGTERM ? "terminated" : sig == SIGHUP ? "hung up" : "interrupted", o.out,
+                (unsigned long long)st.paths, (double)st.paths / ((double)o.width * o.width),
                 (unsigned long long)o.spp);
     rt_image_destroy(img);
     rt_scene_destroy(scene);
-    return st.cancelled ? 130 : 0;
+    return st.cancelled ? 128 + sig : 0;
 }
