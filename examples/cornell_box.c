@@ -110,7 +110,16 @@ static void report(const options *o, const rt_image *img, const rt_render_stats 
 {
     mc_estimate rgb[3];
     rt_image_region_stats(img, 0, 0, img->width, img->height, rgb);
-    app_table t = {stdout, o->csv, NULL, 0};
+    /* region_stats counts a pixel of fewer than 2 samples as variance 0;
+     * with such pixels (--spp 1, or a render stopped in its first pass) the
+     * image's standard error cannot be estimated at all. */
+    uint64_t fewest = UINT64_MAX;
+    for (size_t i = 0; i < (size_t)img->width * (size_t)img->height; i++)
+        fewest = img->px[i].n < fewest ? img->px[i].n : fewest;
+    if (fewest < 2)
+        for (int c = 0; c < 3; c++)
+            rgb[c].std_error = (double)NAN;
+    app_table t = {stdout, o->csv, NULL, 0, "cornell_box"};
     app_table_begin(&t);
     static const char *const channel[3] = {"mean_linear_r", "mean_linear_g", "mean_linear_b"};
     for (int c = 0; c < 3; c++)

@@ -59,7 +59,7 @@ int main(int argc, char **argv)
     mc_estimate halfway = mc_weighted_quantile(s, (size_t)n, 0.5, f);
     free(s);
 
-    app_table t = {stdout, csv, NULL, 0};
+    app_table t = {stdout, csv, NULL, 0, "estimate_halfway"};
     app_table_begin(&t);
     app_table_row(&t, "integral", integral, EXACT_INTEGRAL, NULL);
     app_table_row(&t, "halfway", halfway, EXACT_HALFWAY, NULL);

@@ -88,7 +88,7 @@ int main(int argc, char **argv)
         const pdf *p;
     } rows[5] = {{0, &cosine}, {0, &light}, {0, &mix}, {1, &cosine}, {1, &mix}};
 
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "mixture"};
     app_table_begin(&t);
     for (int i = 0; i < 5; i++) {
         if (!app_selected(method, methods[i]))

@@ -57,7 +57,7 @@ int main(int argc, char **argv)
     app_parse("pi", "pi [--method plain|stratified|running|all] [--samples N] [--seed S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
 
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "pi"};
     app_table_begin(&t);
     bool all = strcmp(method, "all") == 0;
     mc_estimate plain = {0, 0.0, 0.0, 0.0}, strat = plain;
@@ -67,7 +67,7 @@ int main(int argc, char **argv)
         row(&t, "stratified", strat = mc_pi_stratified(seed, n, threads, NULL));
     if (app_selected(method, "running"))
         running(&t, seed, n);
-    if (all && !csv && strat.std_error > 0.0)
+    if (all && !csv && n >= 2 && strat.std_error > 0.0)
         printf("\nplain vs stratified at n = %llu: standard error %.2e vs %.2e (%.0fx; the\n"
                "stratified bar is about 1.5x conservative), actual error %.2e vs %.2e\n",
                (unsigned long long)n, plain.std_error, strat.std_error,

@@ -285,6 +285,87 @@ static void test_cli_program(void **state)
         fail_msg("%s: %d violation(s) of the command-line contract (listed above)", name, bad);
 }
 
+/* --- statistics that cannot be estimated ---------------------------------- */
+
+/* Runs $MC_BUILD/bin/prog with args into r. */
+static void run_named(const char *prog, const char *const *args, run *r)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/bin/%s", mc_test_build_dir(), prog);
+    run_prog(path, args, r);
+}
+
+/* The line of r->out that starts with `method` (NULL if none), copied. */
+static const char *row_of(const run *r, const char *method, char *line, size_t size)
+{
+    size_t len = strlen(method);
+    for (const char *p = r->out; p && *p;) {
+        const char *eol = strchr(p, '\n');
+        size_t k = eol ? (size_t)(eol - p) : strlen(p);
+        if (k > len && strncmp(p, method, len) == 0 && (p[len] == ' ' || p[len] == ',')) {
+            snprintf(line, size, "%.*s", (int)k, p);
+            return line;
+        }
+        p = eol ? eol + 1 : NULL;
+    }
+    return NULL;
+}
+
+/* A standard error from fewer than 2 samples, or a sample variance of 0
+ * that only too few samples produce (every sample missed the light), is
+ * printed as n/a with its reason, never as 0; in CSV the stderr and z
+ * fields are empty and the reason goes to stderr. A zero-variance
+ * estimator's exact 0 stays a number. A chi-square test with no degrees
+ * of freedom is refused with exit 2 before any output. */
+static void test_cli_statistics_na(void **state)
+{
+    (void)state;
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    char line[1024];
+    const char *pi1[] = {"--samples", "1", NULL};
+    run_named("pi", pi1, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(row_of(r, "plain", line, sizeof line));
+    if (!strstr(line, "n/a") || !strstr(line, "fewer than 2 samples"))
+        fail_msg("pi --samples 1: '%s'", line);
+    const char *light5[] = {"--samples", "5", NULL};
+    run_named("light_pdf", light5, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(row_of(r, "cosine", line, sizeof line));
+    if (!strstr(line, "n/a") || strstr(line, "0.000e+00"))
+        fail_msg("light_pdf --samples 5, cosine row: '%s'", line);
+    const char *mix5[] = {"--samples", "5", "--csv", NULL};
+    run_named("mixture", mix5, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(row_of(r, "light-cosine", line, sizeof line));
+    /* method,n,estimate,stderr,exact,z,variance: stderr and z empty. */
+    char method[64];
+    unsigned long long n;
+    double est, exact;
+    int used = 0;
+    if (sscanf(line, "%63[^,],%llu,%lf,,%lf,,%n", method, &n, &est, &exact, &used) != 4 || used == 0)
+        fail_msg("mixture --samples 5 --csv, light-cosine: '%s'", line);
+    if (!strstr(r->err, "light-cosine: stderr and z n/a"))
+        fail_msg("mixture --csv: no reason on stderr: '%s'", r->err);
+    const char *xsq[] = {"--pdf", "quadratic", "--samples", "1000", NULL};
+    run_named("integrate_x_sq", xsq, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(row_of(r, "quadratic", line, sizeof line));
+    if (strstr(line, "n/a"))
+        fail_msg("integrate_x_sq quadratic (zero variance, exact): '%s'", line);
+    const char *chi5[] = {"pvalues", "--samples", "5", "--seeds", "2", NULL};
+    run_named("plotdata_chi2", chi5, r);
+    char why[512];
+    if (judge_bad("plotdata_chi2", r, why, sizeof why))
+        fail_msg("plotdata_chi2 pvalues --samples 5: %s", why);
+    const char *tiny_flux[] = {"--flux", "1e-300", NULL};
+    run_named("sphere_light", tiny_flux, r);
+    if (judge_bad("sphere_light", r, why, sizeof why))
+        fail_msg("sphere_light --flux 1e-300: %s", why);
+    free(r);
+}
+
 /* --- negative controls ---------------------------------------------------- */
 
 static negctl tally;
@@ -365,7 +446,7 @@ static int by_name(const void *a, const void *b)
 int main(void)
 {
     static char *paths[MAX_PROGRAMS];
-    static struct CMUnitTest tests[MAX_PROGRAMS + 1];
+    static struct CMUnitTest tests[MAX_PROGRAMS + 2];
     static char names[MAX_PROGRAMS][96];
     size_t n = 0;
     /* Every program and every benchmark follows the same CLI rules. */
@@ -394,11 +475,12 @@ int main(void)
     }
     tests[0] = (struct CMUnitTest){"test_cli_negative_controls", test_cli_negative_controls, NULL, NULL,
                                    NULL};
+    tests[1] = (struct CMUnitTest){"test_cli_statistics_na", test_cli_statistics_na, NULL, NULL, NULL};
     for (size_t i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[i], "test_cli_%s", strrchr(paths[i], '/') + 1);
-        tests[i + 1] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
+        tests[i + 2] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
     }
-    int rc = _cmocka_run_group_tests("test_cli", tests, n + 1, NULL, report);
+    int rc = _cmocka_run_group_tests("test_cli", tests, n + 2, NULL, report);
     for (size_t i = 0; i < n; i++)
         free(paths[i]);
     return rc;

@@ -136,6 +136,11 @@ static void test_cli_writes_images(void **state)
     }
     assert_int_equal(run("--help", out, sizeof out, err, sizeof err), 0);
     assert_non_null(strstr(out, "--strategy"));
+    /* One sample per pixel: no pixel variance, so no standard error. */
+    snprintf(args, sizeof args, "--width 8 --spp 1 -o %s/cli_ok.png", b);
+    assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+    if (!strstr(out, "n/a") || strstr(out, "0.000e+00"))
+        fail_msg("--spp 1: the standard error is not n/a: '%s'", out);
 }
 
 /* SIGINT after a second of a long render: exit 130, a complete PNG, and

@@ -186,14 +186,35 @@ void app_table_begin(const app_table *t)
     fputc('\n', t->out);
 }
 
+const char *app_no_stderr_reason(mc_estimate e, double exact)
+{
+    if (e.n < 2)
+        return "fewer than 2 samples";
+    if (isnan(e.std_error))
+        return "fewer than 2 samples in some pixels or cells";
+    /* Every sample gave the same value, yet the estimate is not the exact
+     * value: the sample variance of 0 is an artefact of too few samples
+     * (all of them missed the light), not a zero-variance estimator, whose
+     * estimate equals the exact value up to rounding. */
+    if (e.std_error == 0.0 && !isnan(exact) &&
+        fabs(e.value - exact) > 1e-12 * fmax(fabs(exact), 1e-300))
+        return "all samples equal: too few to estimate the variance";
+    return NULL;
+}
+
 void app_table_row(const app_table *t, const char *method, mc_estimate e, double exact,
                    const double *extra)
 {
     bool has_exact = !isnan(exact);
-    bool has_z = has_exact && e.std_error > 0.0;
+    const char *why = app_no_stderr_reason(e, exact);
+    bool has_se = why == NULL;
+    bool has_z = has_exact && has_se && e.std_error > 0.0;
     double z = has_z ? mc_z_score(e.value, exact, e.std_error) : 0.0;
     if (t->csv) {
-        fprintf(t->out, "%s,%llu,%.17g,%.17g,", method, (unsigned long long)e.n, e.value, e.std_error);
+        fprintf(t->out, "%s,%llu,%.17g,", method, (unsigned long long)e.n, e.value);
+        if (has_se)
+            fprintf(t->out, "%.17g", e.std_error);
+        fputc(',', t->out);
         if (has_exact)
             fprintf(t->out, "%.17g", exact);
         fputc(',', t->out);
@@ -201,8 +222,15 @@ void app_table_row(const app_table *t, const char *method, mc_estimate e, double
             fprintf(t->out, "%.6g", z);
         for (size_t i = 0; i < t->n_extra; i++)
             fprintf(t->out, ",%.17g", extra[i]);
+        /* The CSV columns are fixed; the reason goes to stderr. */
+        if (why && t->prog)
+            fprintf(stderr, "%s: %s: stderr and z n/a: %s\n", t->prog, method, why);
     } else {
-        fprintf(t->out, "%-14s %14llu %18.12f %12.3e ", method, (unsigned long long)e.n, e.value, e.std_error);
+        fprintf(t->out, "%-14s %14llu %18.12f ", method, (unsigned long long)e.n, e.value);
+        if (has_se)
+            fprintf(t->out, "%12.3e ", e.std_error);
+        else
+            fprintf(t->out, "%12s ", "n/a");
         if (has_exact)
             fprintf(t->out, "%18.12f ", exact);
         else
@@ -210,9 +238,11 @@ void app_table_row(const app_table *t, const char *method, mc_estimate e, double
         if (has_z)
             fprintf(t->out, "%8.3f", z);
         else
-            fprintf(t->out, "%8s", "-");
+            fprintf(t->out, "%8s", why && has_exact ? "n/a" : "-");
         for (size_t i = 0; i < t->n_extra; i++)
             fprintf(t->out, " %14.6g", extra[i]);
+        if (why)
+            fprintf(t->out, "  (stderr n/a: %s)", why);
     }
     fputc('\n', t->out);
 }

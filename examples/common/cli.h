@@ -85,14 +85,28 @@ typedef struct app_table {
     bool csv;
     const char *const *extra_cols;
     size_t n_extra;
+    const char *prog; /* may be NULL; with csv, names the program in the
+                       * stderr note of a row whose stderr is n/a */
 } app_table;
 
 /* Prints the header (CSV header line, or the table's title row). */
 void app_table_begin(const app_table *t);
 
+/* Why the standard error (and so z) of e cannot be estimated, or NULL
+ * when it can: fewer than 2 samples; a std_error of NaN (the estimator's
+ * way of saying so, e.g. an image with pixels of one sample); or a sample
+ * variance of 0 with an estimate that is not the exact value, which only
+ * too few samples produce (a zero-variance estimator hits the exact value
+ * up to rounding). */
+const char *app_no_stderr_reason(mc_estimate e, double exact);
+
 /* Prints one row: method, e.n, e.value, e.std_error, exact (NaN: unknown,
  * printed empty), z = (value - exact) / std_error (empty when exact is
- * unknown or std_error is 0), then extra[0..n_extra). */
+ * unknown or std_error is 0), then extra[0..n_extra). A standard error
+ * that cannot be estimated (app_no_stderr_reason) is printed as "n/a",
+ * z too, and the reason after the row; in CSV both fields are empty and
+ * the reason goes to stderr as "prog: method: stderr and z n/a: why"
+ * when t->prog is set. */
 void app_table_row(const app_table *t, const char *method, mc_estimate e, double exact,
                    const double *extra);
 
