@@ -53,18 +53,19 @@ static options parse(int argc, char **argv)
 {
     options o = {"book", "mixture", "2", "cornell.png", 600, 50, 0, 100, 1, false, false};
     const app_opt opts[] = {
-        {"--scene", APP_CHOICE, &o.scene, "the scene (book)", rt_scene_names, 0, 0},
-        {"--width", APP_INT, &o.width, "image width and height in pixels (600)", NULL, 1, 65536},
-        {"--spp", APP_COUNT, &o.spp, "samples per pixel (100)", NULL, 0, 0},
+        {"--scene", APP_CHOICE, &o.scene, "the scene (default book)", rt_scene_names, 0, 0},
+        {"--width", APP_INT, &o.width, "image width and height in pixels (default 600)", NULL, 1, 65536},
+        {"--spp", APP_COUNT, &o.spp, "samples per pixel (default 100)", NULL, 0, 0},
         {"--samples", APP_COUNT, &o.spp, "same as --spp", NULL, 0, 0},
-        {"--max-depth", APP_INT, &o.depth, "most ray segments per path (50)", NULL, 0, 1e6},
-        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (mixture)", rt_strategy_names, 0, 0},
-        {"--threads", APP_INT, &o.threads, "OpenMP threads, 0 for all (0)", NULL, 0, 4096},
-        {"--seed", APP_SEED, &o.seed, "random seed (1)", NULL, 0, 0},
-        {"-o", APP_STRING, &o.out, "output image .png, .ppm or .pfm (linear) (cornell.png)", NULL, 0, 0},
-        {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (2)", rt_gamma_names, 0, 0},
+        {"--max-depth", APP_INT, &o.depth, "most ray segments per path (default 50)", NULL, 0, 1e6},
+        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (default mixture)", rt_strategy_names, 0, 0},
+        {"--threads", APP_INT, &o.threads, "OpenMP threads, 0 for all, at most 64 per processor (default 0)",
+         NULL, 0, app_max_threads()},
+        {"--seed", APP_SEED, &o.seed, "random seed (default 1)", NULL, 0, 0},
+        {"-o", APP_STRING, &o.out, "output image .png, .ppm or .pfm (linear) (default cornell.png)", NULL, 0, 0},
+        {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (default 2)", rt_gamma_names, 0, 0},
         {"--csv", APP_FLAG, &o.csv, "print the mean linear RGB as CSV", NULL, 0, 0},
-        {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments (off)", NULL, 0, 0},
+        {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments (default off)", NULL, 0, 0},
     };
     app_parse(prog, "cornell_box [--scene S] [--width W] [--spp N] [--max-depth D] "
                     "[--strategy S] [--threads T] [--seed S] [-o FILE] [--gamma G] [--roulette]",

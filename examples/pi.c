@@ -51,7 +51,8 @@ int main(int argc, char **argv)
         {"--samples", APP_COUNT, &n, "number of points (default 1e8)", NULL, 0, 0},
         APP_OPT_SEED(&seed),
         {"--method", APP_CHOICE, &method, "estimator (default all)", methods, 0, 0},
-        {"--threads", APP_INT, &threads, "OpenMP threads, 0 = all (default 0)", NULL, 0, 1024},
+        {"--threads", APP_INT, &threads, "OpenMP threads, 0 = all, at most 64 per processor (default 0)",
+         NULL, 0, app_max_threads()},
         APP_OPT_CSV(&csv),
     };
     app_parse("pi", "pi [--method plain|stratified|running|all] [--samples N] [--seed S] [--csv]",

@@ -84,7 +84,7 @@ static void print_cells(const mc_gof_spec *s, const double *obs, const double *e
 int main(int argc, char **argv)
 {
     uint64_t n = 100000, seed = 1;
-    int seeds = 200, nc = 16, np = 32;
+    int seeds = 0, nc = 16, np = 32; /* seeds 0: not given */
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "samples per test (default 1e5)", NULL, 0, 0},
         {"--seed", APP_SEED, &seed, "seed of the test (cells) or of the first test (pvalues)", NULL, 0, 0},
@@ -96,6 +96,9 @@ int main(int argc, char **argv)
     int npos = app_parse(PROG, PROG " cells|pvalues [options]", argc, argv, opts, 5, cmd, 1);
     if (npos != 1 || (strcmp(cmd[0], "cells") != 0 && strcmp(cmd[0], "pvalues") != 0))
         app_fail(PROG, "expected the command 'cells' or 'pvalues' (see --help)");
+    if (seeds && strcmp(cmd[0], "cells") == 0)
+        app_fail(PROG, "--seeds is an option of pvalues, not of cells");
+    seeds = seeds ? seeds : 200;
 
     static double obs[64 * 64], expct[64 * 64];
     if (strcmp(cmd[0], "cells") == 0) {

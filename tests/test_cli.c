@@ -366,6 +366,99 @@ static void test_cli_statistics_na(void **state)
     free(r);
 }
 
+/* --- one grammar, one answer ---------------------------------------------- */
+
+/* Whether `cmd` (shell syntax, run from the build directory's bin) exits
+ * 2 with one line on stderr naming `name` and nothing on stdout. */
+static bool shell_refuses(const char *name, const char *cmd)
+{
+    char full[2048];
+    const char *b = mc_test_build_dir();
+    snprintf(full, sizeof full, "cd %s/bin && %s >../cli_g.out 2>../cli_g.err", b, cmd);
+    int rc = system(full);
+    run r;
+    memset(&r, 0, sizeof r);
+    r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/cli_g.out", b);
+    FILE *f = fopen(path, "rb");
+    if (f) {
+        r.out_len = fread(r.out, 1, CAPTURE - 1, f);
+        fclose(f);
+    }
+    snprintf(path, sizeof path, "%s/cli_g.err", b);
+    f = fopen(path, "rb");
+    if (f) {
+        r.err_len = fread(r.err, 1, CAPTURE - 1, f);
+        fclose(f);
+    }
+    char why[512];
+    if (judge_bad(name, &r, why, sizeof why)) {
+        printf("'%s': %s\n", cmd, why);
+        return false;
+    }
+    return true;
+}
+
+/* Counts and seeds share one grammar (1e3 is a seed as it is a count; 1.5
+ * is neither); an option given twice, an option the subcommand does not
+ * take, a discrete outcome that is not an index and a thread count past
+ * the machine's limit are refused before any output; --help names each
+ * default once. */
+static void test_cli_one_grammar(void **state)
+{
+    (void)state;
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    static const char *const good[][7] = {
+        {"pi", "--seed", "1e3", "--samples", "1e3", NULL},
+        {"pi", "--seed", "0x3e8", "--samples", "0x3e8", NULL},
+        {"pi", "--samples", "2.5e3", "--threads", "1e0", NULL},
+    };
+    for (size_t i = 0; i < sizeof good / sizeof good[0]; i++) {
+        run_named(good[i][0], good[i] + 1, r);
+        if (r->status != 0)
+            fail_msg("%s %s %s %s %s: exit %d, '%s'", good[i][0], good[i][1], good[i][2], good[i][3],
+                     good[i][4], r->status, r->err);
+    }
+    char threads[64];
+    snprintf(threads, sizeof threads, "%ld", 64 * sysconf(_SC_NPROCESSORS_ONLN) + 1);
+    const char *const bad[][8] = {
+        {"pi", "--seed", "1.5", NULL},
+        {"pi", "--samples", "1.5", NULL},
+        {"pi", "--seed", "-1", NULL},
+        {"pi", "--samples", " 5", NULL},
+        {"pi", "--samples", "10", "--samples", "20", NULL},
+        {"pi", "--threads", threads, NULL},
+        {"cornell_box", "--threads", threads, "--width", "4", NULL},
+        {"cornell_box", "--spp", "2", "--samples", "3", NULL},
+        {"warp", "list", "--n", "3", NULL},
+        {"warp", "pdf", "cosine", "--seed", "3", NULL},
+        {"warp", "sample", "cosine", "--alpha", "0.1", NULL},
+        {"warp", "sample", "cosine", "--seed", "1", "--seed", "2", NULL},
+        {"plotdata_chi2", "cells", "--seeds", "3", NULL},
+    };
+    int failures = 0;
+    char why[512];
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        run_named(bad[i][0], bad[i] + 1, r);
+        if (judge_bad(bad[i][0], r, why, sizeof why)) {
+            printf("%s %s %s ...: %s\n", bad[i][0], bad[i][1], bad[i][2] ? bad[i][2] : "", why);
+            failures++;
+        }
+    }
+    failures += !shell_refuses("warp", "printf '2.5\\n' | ./warp pdf discrete");
+    failures += !shell_refuses("warp", "printf -- '-1\\n' | ./warp pdf alias");
+    failures += !shell_refuses("warp", "printf '8\\n' | ./warp pdf discrete");
+    const char *help[] = {"--help", NULL};
+    run_named("cornell_box", help, r);
+    if (strstr(r->out, "(book) (") || !strstr(r->out, "default book") || !strstr(r->out, "1e3"))
+        fail_msg("cornell_box --help: the default twice, or no grammar: '%.400s'", r->out);
+    free(r);
+    if (failures)
+        fail_msg("%d case(s) above were accepted or broke the contract", failures);
+}
+
 /* --- negative controls ---------------------------------------------------- */
 
 static negctl tally;
@@ -446,7 +539,7 @@ static int by_name(const void *a, const void *b)
 int main(void)
 {
     static char *paths[MAX_PROGRAMS];
-    static struct CMUnitTest tests[MAX_PROGRAMS + 2];
+    static struct CMUnitTest tests[MAX_PROGRAMS + 3];
     static char names[MAX_PROGRAMS][96];
     size_t n = 0;
     /* Every program and every benchmark follows the same CLI rules. */
@@ -476,11 +569,12 @@ int main(void)
     tests[0] = (struct CMUnitTest){"test_cli_negative_controls", test_cli_negative_controls, NULL, NULL,
                                    NULL};
     tests[1] = (struct CMUnitTest){"test_cli_statistics_na", test_cli_statistics_na, NULL, NULL, NULL};
+    tests[2] = (struct CMUnitTest){"test_cli_one_grammar", test_cli_one_grammar, NULL, NULL, NULL};
     for (size_t i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[i], "test_cli_%s", strrchr(paths[i], '/') + 1);
-        tests[i + 2] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
+        tests[i + 3] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
     }
-    int rc = _cmocka_run_group_tests("test_cli", tests, n + 2, NULL, report);
+    int rc = _cmocka_run_group_tests("test_cli", tests, n + 3, NULL, report);
     for (size_t i = 0; i < n; i++)
         free(paths[i]);
     return rc;

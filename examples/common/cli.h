@@ -24,11 +24,21 @@
  * double-precision sample index exact. */
 #define APP_MAX_SAMPLES 10000000000000ULL
 
+/* The one grammar of every count, seed and whole-number option, printed
+ * by --help: digits (1000), hex after 0x (0x3e8), or a decimal number with
+ * a fraction or an exponent that is a whole number (1e3, 2.5e3; at most
+ * 2^53, past which a double no longer names one integer). No sign (a
+ * minus only where the option takes negative values), no spaces, no
+ * "inf" or "nan". */
+#define APP_NUMBER_GRAMMAR                                                                    \
+    "N, S, T and whole-number values: digits (1000), hex (0x3e8), or with an exponent or a\n" \
+    "fraction that makes a whole number (1e3, 2.5e3; at most 2^53); no sign, no spaces."
+
 typedef enum app_opt_kind {
     APP_FLAG,   /* bool *: set when present, takes no value */
-    APP_COUNT,  /* uint64_t *: 1 .. APP_MAX_SAMPLES, accepts 1e6 style */
-    APP_SEED,   /* uint64_t *: any unsigned 64-bit integer, decimal or 0x hex */
-    APP_INT,    /* int *: within [min, max] */
+    APP_COUNT,  /* uint64_t *: 1 .. APP_MAX_SAMPLES, APP_NUMBER_GRAMMAR */
+    APP_SEED,   /* uint64_t *: 0 .. 2^64 - 1, APP_NUMBER_GRAMMAR */
+    APP_INT,    /* int *: within [min, max], APP_NUMBER_GRAMMAR after an optional '-' */
     APP_DOUBLE, /* double *: finite, within [min, max] */
     APP_CHOICE, /* const char **: one of the NULL-terminated `choices` */
     APP_STRING  /* const char **: any non-empty string */
@@ -60,13 +70,19 @@ bool app_selected(const char *choice, const char *name);
 int app_parse(const char *prog, const char *usage, int argc, char **argv, const app_opt *opts,
               size_t n, const char **positional, int max_positional);
 
-/* Parses a sample count like "1000", "1e6", "2.5e3" (an exact integer
- * within 1 .. max). Returns false for anything else. */
+/* Parses a whole number in APP_NUMBER_GRAMMAR within [min, max]. Returns
+ * false for anything else. */
+bool app_parse_uint(const char *s, uint64_t min, uint64_t max, uint64_t *out);
+
+/* A sample count: app_parse_uint within 1 .. max. */
 bool app_parse_count(const char *s, uint64_t max, uint64_t *out);
 
-/* Parses an unsigned 64-bit seed: decimal, or hex after 0x (never octal;
- * no sign or leading space). */
+/* A seed: app_parse_uint within 0 .. 2^64 - 1. */
 bool app_parse_seed(const char *s, uint64_t *out);
+
+/* The most OpenMP threads a --threads option accepts: 64 per processor,
+ * or the OpenMP thread limit when lower. */
+int app_max_threads(void);
 
 /* Parses a finite double with nothing after it. */
 bool app_parse_double(const char *s, double *out);
