@@ -459,6 +459,43 @@ static void test_cli_one_grammar(void **state)
         fail_msg("%d case(s) above were accepted or broke the contract", failures);
 }
 
+/* A run estimated to take more than a few seconds says so on stderr when
+ * it starts (stderr is not a terminal here), in one line naming the
+ * program and the time; a short run says nothing. The long runs are
+ * stopped after 2 s (pi by SIGKILL, cornell_box by SIGTERM). */
+static void test_cli_long_runs_announce(void **state)
+{
+    (void)state;
+    const char *b = mc_test_build_dir();
+    static const char *const cmds[] = {
+        "timeout -s KILL 2 ./pi --samples 1e13 --threads 1",
+        "timeout -s TERM 2 ./cornell_box --spp 1e13 --width 8 --threads 1 -o ../cli_long.png",
+    };
+    char full[2048], err[4096];
+    for (int i = 0; i < 2; i++) {
+        snprintf(full, sizeof full, "cd %s/bin && %s >/dev/null 2>../cli_long.err", b, cmds[i]);
+        (void)system(full);
+        snprintf(full, sizeof full, "%s/cli_long.err", b);
+        FILE *f = fopen(full, "rb");
+        assert_non_null(f);
+        size_t n = fread(err, 1, sizeof err - 1, f);
+        err[n] = '\0';
+        fclose(f);
+        const char *name = i ? "cornell_box: about " : "pi: about ";
+        if (strncmp(err, name, strlen(name)) != 0 || !strstr(err, " for "))
+            fail_msg("'%s': no announcement of its time: '%s'", cmds[i], err);
+    }
+    snprintf(full, sizeof full, "%s/cli_long.png", b);
+    remove(full);
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    const char *quick[] = {"--samples", "1e5", NULL};
+    run_named("pi", quick, r);
+    if (r->status != 0 || r->err_len != 0)
+        fail_msg("pi --samples 1e5: exit %d, stderr '%s'", r->status, r->err);
+    free(r);
+}
+
 /* --- negative controls ---------------------------------------------------- */
 
 static negctl tally;
@@ -539,7 +576,7 @@ static int by_name(const void *a, const void *b)
 int main(void)
 {
     static char *paths[MAX_PROGRAMS];
-    static struct CMUnitTest tests[MAX_PROGRAMS + 3];
+    static struct CMUnitTest tests[MAX_PROGRAMS + 4];
     static char names[MAX_PROGRAMS][96];
     size_t n = 0;
     /* Every program and every benchmark follows the same CLI rules. */
@@ -570,11 +607,13 @@ int main(void)
                                    NULL};
     tests[1] = (struct CMUnitTest){"test_cli_statistics_na", test_cli_statistics_na, NULL, NULL, NULL};
     tests[2] = (struct CMUnitTest){"test_cli_one_grammar", test_cli_one_grammar, NULL, NULL, NULL};
+    tests[3] = (struct CMUnitTest){"test_cli_long_runs_announce", test_cli_long_runs_announce, NULL, NULL,
+                                   NULL};
     for (size_t i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[i], "test_cli_%s", strrchr(paths[i], '/') + 1);
-        tests[i + 3] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
+        tests[i + 4] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
     }
-    int rc = _cmocka_run_group_tests("test_cli", tests, n + 3, NULL, report);
+    int rc = _cmocka_run_group_tests("test_cli", tests, n + 4, NULL, report);
     for (size_t i = 0; i < n; i++)
         free(paths[i]);
     return rc;

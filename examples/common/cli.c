@@ -94,6 +94,28 @@ int app_max_threads(void)
     return (int)(most < limit ? most : limit);
 }
 
+int app_threads_used(int threads)
+{
+    int procs = omp_get_num_procs(), t = threads > 0 ? threads : omp_get_max_threads();
+    /* More threads than processors run no faster. */
+    return t < procs ? (t > 0 ? t : 1) : (procs > 0 ? procs : 1);
+}
+
+void app_announce(const char *prog, double seconds, const char *what)
+{
+    if (!(seconds > APP_ANNOUNCE_SECONDS))
+        return;
+    static const struct {
+        double s;
+        const char *unit;
+    } units[] = {{86400.0, "days"}, {3600.0, "h"}, {60.0, "min"}, {1.0, "s"}};
+    size_t k = 0;
+    while (k + 1 < sizeof units / sizeof units[0] && seconds < 2.0 * units[k].s)
+        k++;
+    fprintf(stderr, "%s: about %.2g %s for %s\n", prog, seconds / units[k].s, units[k].unit, what);
+    fflush(stderr);
+}
+
 static void print_help(const char *usage, const app_opt *opts, size_t n)
 {
     printf("usage: %s\n\n", usage);

@@ -87,6 +87,18 @@ int app_max_threads(void);
 /* Parses a finite double with nothing after it. */
 bool app_parse_double(const char *s, double *out);
 
+/* Runs estimated to take longer than this many seconds announce it. */
+#define APP_ANNOUNCE_SECONDS 5.0
+
+/* Says on stderr, before a run estimated to take `seconds` (more than
+ * APP_ANNOUNCE_SECONDS), how long it will take and what it is:
+ * "prog: about 2.3 h for what". `threads` is the --threads value (0: all)
+ * that the estimate assumed. Silent for shorter runs. */
+void app_announce(const char *prog, double seconds, const char *what);
+
+/* The number of threads a --threads value of `threads` runs (0: all). */
+int app_threads_used(int threads);
+
 /* Prints "prog: message" to stderr and exits with status 2. */
 _Noreturn void app_fail(const char *prog, const char *fmt, ...)
 #if defined(__GNUC__)
