@@ -496,6 +496,189 @@ static void test_cli_long_runs_announce(void **state)
     free(r);
 }
 
+/* --- the bad-input matrix -------------------------------------------------- */
+
+/* Every option of every program, one row each: a new option or program is
+ * covered by adding a row. `fast` are options that keep an accidental
+ * acceptance short; the option under test is left out of them. */
+typedef enum opt_kind { K_COUNT, K_SEED, K_WHOLE, K_REAL, K_CHOICE, K_FLAG, K_PATH } opt_kind;
+
+typedef struct matrix_prog {
+    const char *name;
+    const char *pre[3];   /* subcommand words, NULL-terminated */
+    const char *fast[10]; /* option, value pairs, NULL-terminated */
+} matrix_prog;
+
+typedef struct matrix_row {
+    int prog;           /* index into matrix_progs */
+    const char *option; /* with its dashes */
+    opt_kind kind;
+    const char *good;   /* a valid value (the repeated-option case) */
+} matrix_row;
+
+static const matrix_prog matrix_progs[] = {
+    {"cornell_box", {NULL}, {"--width", "4", "--spp", "1", "-o", "/tmp/mcbox-matrix.png", NULL}},
+    {"cos_cubed", {NULL}, {"--samples", "100", NULL}},
+    {"estimate_halfway", {NULL}, {"--samples", "100", NULL}},
+    {"integrate_x_sq", {NULL}, {"--samples", "100", NULL}},
+    {"inverse_cdf", {NULL}, {"--samples", "100", NULL}},
+    {"light_pdf", {NULL}, {"--samples", "100", NULL}},
+    {"log_sin", {NULL}, {"--samples", "100", NULL}},
+    {"mixture", {NULL}, {"--samples", "100", NULL}},
+    {"pi", {NULL}, {"--samples", "100", NULL}},
+    {"plotdata_chi2", {"pvalues", NULL}, {"--samples", "2000", "--seeds", "1", NULL}},
+    {"projected_area", {NULL}, {"--samples", "100", NULL}},
+    {"sphere_importance", {NULL}, {"--samples", "100", NULL}},
+    {"sphere_light", {NULL}, {"--samples", "100", NULL}},
+    {"sphere_plot", {NULL}, {"--samples", "100", NULL}},
+    {"warp", {"sample", "cosine", NULL}, {"--n", "10", NULL}},
+    {"warp", {"chi2", "cosine", NULL}, {"--n", "2000", NULL}},
+};
+
+static const matrix_row matrix_rows[] = {
+    {0, "--scene", K_CHOICE, "book"}, {0, "--width", K_WHOLE, "4"}, {0, "--spp", K_COUNT, "1"},
+    {0, "--samples", K_COUNT, "1"}, {0, "--max-depth", K_WHOLE, "3"}, {0, "--strategy", K_CHOICE, "mis"},
+    {0, "--threads", K_WHOLE, "1"}, {0, "--seed", K_SEED, "2"}, {0, "-o", K_PATH, "/tmp/mcbox-matrix.png"},
+    {0, "--gamma", K_CHOICE, "srgb"}, {0, "--csv", K_FLAG, NULL}, {0, "--roulette", K_FLAG, NULL},
+    {1, "--samples", K_COUNT, "100"}, {1, "--seed", K_SEED, "2"}, {1, "--method", K_CHOICE, "all"},
+    {1, "--csv", K_FLAG, NULL},
+    {2, "--samples", K_COUNT, "100"}, {2, "--seed", K_SEED, "2"}, {2, "--csv", K_FLAG, NULL},
+    {3, "--samples", K_COUNT, "100"}, {3, "--seed", K_SEED, "2"}, {3, "--pdf", K_CHOICE, "all"},
+    {3, "--csv", K_FLAG, NULL},
+    {4, "--samples", K_COUNT, "100"}, {4, "--seed", K_SEED, "2"}, {4, "--csv", K_FLAG, NULL},
+    {5, "--samples", K_COUNT, "100"}, {5, "--seed", K_SEED, "2"}, {5, "--method", K_CHOICE, "all"},
+    {5, "--csv", K_FLAG, NULL},
+    {6, "--samples", K_COUNT, "100"}, {6, "--seed", K_SEED, "2"}, {6, "--method", K_CHOICE, "all"},
+    {6, "--csv", K_FLAG, NULL},
+    {7, "--samples", K_COUNT, "100"}, {7, "--seed", K_SEED, "2"}, {7, "--method", K_CHOICE, "all"},
+    {7, "--csv", K_FLAG, NULL},
+    {8, "--samples", K_COUNT, "100"}, {8, "--seed", K_SEED, "2"}, {8, "--method", K_CHOICE, "all"},
+    {8, "--threads", K_WHOLE, "1"}, {8, "--csv", K_FLAG, NULL},
+    {9, "--samples", K_COUNT, "2000"}, {9, "--seed", K_SEED, "2"}, {9, "--seeds", K_WHOLE, "1"},
+    {9, "--cos-cells", K_WHOLE, "4"}, {9, "--phi-cells", K_WHOLE, "4"},
+    {10, "--samples", K_COUNT, "100"}, {10, "--seed", K_SEED, "2"}, {10, "--body", K_CHOICE, "all"},
+    {10, "--csv", K_FLAG, NULL},
+    {11, "--samples", K_COUNT, "100"}, {11, "--seed", K_SEED, "2"}, {11, "--method", K_CHOICE, "all"},
+    {11, "--csv", K_FLAG, NULL},
+    {12, "--samples", K_COUNT, "100"}, {12, "--seed", K_SEED, "2"}, {12, "--method", K_CHOICE, "all"},
+    {12, "--flux", K_REAL, "10"}, {12, "--radius", K_REAL, "0.5"}, {12, "--distance", K_REAL, "3"},
+    {12, "--theta", K_REAL, "30"}, {12, "--csv", K_FLAG, NULL},
+    {13, "--samples", K_COUNT, "100"}, {13, "--seed", K_SEED, "2"}, {13, "--method", K_CHOICE, "inverse"},
+    {14, "--n", K_COUNT, "10"}, {14, "--samples", K_COUNT, "10"}, {14, "--seed", K_SEED, "2"},
+    {14, "--param", K_CHOICE, NULL},
+    {15, "--n", K_COUNT, "2000"}, {15, "--seed", K_SEED, "2"}, {15, "--alpha", K_REAL, "0.01"},
+};
+
+/* The bad values of each kind (the option's own range decides for the
+ * whole-number and real kinds: every value here is outside all of them). */
+static const char *const *bad_values(opt_kind k)
+{
+    static const char *const count[] = {"-3", "0", "1e30", "abc", "", "nan", "inf", "1.5", " 5", "0x", NULL};
+    static const char *const seed[] = {"-1", "abc", "", "nan", "inf", "1.5", "1e20", "0x", " 1", NULL};
+    static const char *const whole[] = {"-1e9", "1e30", "abc", "", "nan", "inf", "1.5", NULL};
+    static const char *const real[] = {"-1e9", "1e300", "abc", "", "nan", "inf", "-inf", NULL};
+    static const char *const choice[] = {"nope", "", NULL};
+    static const char *const path[] = {"/tmp", "/nonexistent-dir/x.png", "/proc/mcbox-x.png", "",
+                                       "/tmp/mcbox-matrix.jpg", NULL};
+    static const char *const none[] = {NULL};
+    switch (k) {
+    case K_COUNT: return count;
+    case K_SEED: return seed;
+    case K_WHOLE: return whole;
+    case K_REAL: return real;
+    case K_CHOICE: return choice;
+    case K_PATH: return path;
+    case K_FLAG: return none;
+    }
+    return none;
+}
+
+/* Builds the arguments: the program's subcommand words, its fast options
+ * except `skip`, then the case's words. */
+static int matrix_args(const matrix_prog *p, const char *skip, const char *const *words, const char **args)
+{
+    int k = 0;
+    for (int i = 0; p->pre[i]; i++)
+        args[k++] = p->pre[i];
+    for (int i = 0; p->fast[i]; i += 2)
+        if (!skip || strcmp(p->fast[i], skip) != 0) {
+            args[k++] = p->fast[i];
+            args[k++] = p->fast[i + 1];
+        }
+    for (int i = 0; words[i]; i++)
+        args[k++] = words[i];
+    args[k] = NULL;
+    return k;
+}
+
+/* Runs one case; returns whether it met the contract (printing it if not). */
+static bool matrix_case(const matrix_prog *p, const char *skip, const char *const *words, run *r, int *cases)
+{
+    const char *args[16];
+    matrix_args(p, skip, words, args);
+    char path[1024], why[512];
+    snprintf(path, sizeof path, "%s/bin/%s", mc_test_build_dir(), p->name);
+    run_prog(path, args, r);
+    ++*cases;
+    if (!judge_bad(p->name, r, why, sizeof why))
+        return true;
+    printf("matrix: %s", p->name);
+    for (int i = 0; args[i]; i++)
+        printf(" '%s'", args[i]);
+    printf(": %s\n", why);
+    return false;
+}
+
+/* Every row's option with every bad value of its kind, with its value
+ * missing (last on the line) and given twice; every program with an
+ * unknown flag and a stray argument. Prints the count of cases and of
+ * those that met the contract; all must. */
+static void test_cli_bad_input_matrix(void **state)
+{
+    (void)state;
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    int cases = 0, met = 0;
+    const size_t n_progs = sizeof matrix_progs / sizeof matrix_progs[0];
+    for (size_t i = 0; i < sizeof matrix_rows / sizeof matrix_rows[0]; i++) {
+        const matrix_row *row = &matrix_rows[i];
+        const matrix_prog *p = &matrix_progs[row->prog];
+        const char *const *bad = bad_values(row->kind);
+        /* --param takes k=v: bad ones are an unknown key and a bad value. */
+        static const char *const param_bad[] = {"nope=1", "n=abc", "", "n", NULL};
+        if (row->good == NULL && row->kind == K_CHOICE)
+            bad = param_bad;
+        for (int v = 0; bad[v]; v++) {
+            const char *w[] = {row->option, bad[v], NULL};
+            met += matrix_case(p, row->option, w, r, &cases);
+        }
+        if (row->kind == K_FLAG) {
+            char with_value[64];
+            snprintf(with_value, sizeof with_value, "%s=1", row->option);
+            const char *w1[] = {with_value, NULL}, *w2[] = {row->option, row->option, NULL};
+            met += matrix_case(p, row->option, w1, r, &cases);
+            met += matrix_case(p, row->option, w2, r, &cases);
+            continue;
+        }
+        const char *missing[] = {row->option, NULL};
+        met += matrix_case(p, row->option, missing, r, &cases);
+        if (row->good) {
+            const char *twice[] = {row->option, row->good, row->option, row->good, NULL};
+            met += matrix_case(p, row->option, twice, r, &cases);
+        }
+    }
+    for (size_t i = 0; i < n_progs; i++) {
+        const char *unknown[] = {"--no-such-flag", "1", NULL}, *stray[] = {"stray", NULL};
+        met += matrix_case(&matrix_progs[i], NULL, unknown, r, &cases);
+        met += matrix_case(&matrix_progs[i], NULL, stray, r, &cases);
+    }
+    free(r);
+    remove("/tmp/mcbox-matrix.png");
+    printf("bad-input matrix: %d cases, %d met the contract\n", cases, met);
+    if (met != cases)
+        fail_msg("%d of %d bad-input cases broke the contract (listed above)", cases - met, cases);
+}
+
 /* --- negative controls ---------------------------------------------------- */
 
 static negctl tally;
@@ -576,7 +759,7 @@ static int by_name(const void *a, const void *b)
 int main(void)
 {
     static char *paths[MAX_PROGRAMS];
-    static struct CMUnitTest tests[MAX_PROGRAMS + 4];
+    static struct CMUnitTest tests[MAX_PROGRAMS + 5];
     static char names[MAX_PROGRAMS][96];
     size_t n = 0;
     /* Every program and every benchmark follows the same CLI rules. */
@@ -609,11 +792,12 @@ int main(void)
     tests[2] = (struct CMUnitTest){"test_cli_one_grammar", test_cli_one_grammar, NULL, NULL, NULL};
     tests[3] = (struct CMUnitTest){"test_cli_long_runs_announce", test_cli_long_runs_announce, NULL, NULL,
                                    NULL};
+    tests[4] = (struct CMUnitTest){"test_cli_bad_input_matrix", test_cli_bad_input_matrix, NULL, NULL, NULL};
     for (size_t i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[i], "test_cli_%s", strrchr(paths[i], '/') + 1);
-        tests[i + 4] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
+        tests[i + 5] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
     }
-    int rc = _cmocka_run_group_tests("test_cli", tests, n + 4, NULL, report);
+    int rc = _cmocka_run_group_tests("test_cli", tests, n + 5, NULL, report);
     for (size_t i = 0; i < n; i++)
         free(paths[i]);
     return rc;
