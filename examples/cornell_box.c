@@ -162,6 +162,8 @@ int main(int argc, char **argv)
     rt_scene *scene = rt_scene_named(o.scene, &cp);
     rt_image *img = rt_image_create(o.width, o.width);
     if (!scene || !img) {
+        rt_image_destroy(img);
+        rt_scene_destroy(scene);
         app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
@@ -195,6 +197,8 @@ int main(int argc, char **argv)
     job.progress_ctx = clock;
     rt_render_stats st;
     if (rt_render(&job, img, &st) < 0) {
+        rt_image_destroy(img);
+        rt_scene_destroy(scene);
         app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
@@ -204,6 +208,8 @@ int main(int argc, char **argv)
     errno = 0;
     if (rt_image_write(img, out.f, format, gamma) != 0 || !app_outfile_commit(&out)) {
         int e = errno;
+        rt_image_destroy(img);
+        rt_scene_destroy(scene);
         app_outfile_abort(&out);
         fprintf(stderr, "%s: error writing '%s'%s%s; it was left as it was\n", prog, o.out,
                 e ? ": " : "", e ? strerror(e) : "");
