@@ -263,7 +263,7 @@ static void test_cli_write_error_keeps_old_file(void **state)
 static void test_cli_refusals_keep_old_file(void **state)
 {
     (void)state;
-    char out[4096], err[4096], args[2048], dir[1024], path[1024], buf[256];
+    char out[4096], err[4096], args[2048], dir[1024], path[1100], dpath[1100], buf[256];
     const char *b = mc_test_build_dir();
     snprintf(dir, sizeof dir, "%s/cli_ro", b);
     mkdir(dir, 0755);
@@ -280,10 +280,10 @@ static void test_cli_refusals_keep_old_file(void **state)
         printf("running as root: the unwritable-directory case is skipped\n");
     }
     snprintf(args, sizeof args, "--width 8 --spp 1 -o %s/d.png", dir);
-    snprintf(buf, sizeof buf, "%s/d.png", dir);
-    mkdir(buf, 0755);
+    snprintf(dpath, sizeof dpath, "%s/d.png", dir);
+    mkdir(dpath, 0755);
     int rc = run(args, out, sizeof out, err, sizeof err);
-    rmdir(buf);
+    rmdir(dpath);
     if (rc != 2 || count_lines(err) != 1 || out[0])
         fail_msg("output path is a directory: exit %d, stderr '%s'", rc, err);
     snprintf(args, sizeof args, "--width 65536 -o %s", path);
