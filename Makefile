@@ -114,6 +114,7 @@ help:
 	@echo "make book-check  the book, then its checks: broken fixtures, links, EPUB, a headless browser"
 	@echo "make deps      install the Debian packages the project needs, when missing"
 	@echo "make clean     remove build/"
+	@echo "V=1            show the full compiler command lines"
 
 deps:
 	@sh tools/deps.sh $(DEB_PACKAGES)
@@ -174,6 +175,17 @@ clean:
 	rm -rf build
 
 # --- compilation -----------------------------------------------------------
+# Quiet by default: one short line per file ("  CC  mc/rng.c"); V=1 shows
+# the full compiler and archiver command lines, as kbuild and automake do.
+V ?= 0
+ifeq ($(V),1)
+Q :=
+quiet := @:
+else
+Q := @
+quiet := @echo
+endif
+
 # The compiler and its flags are recorded in a stamp that changes only when
 # they do; every object depends on it, so `make CFLAGS=...` or a Makefile
 # flag change rebuilds what it must and nothing else.
@@ -190,7 +202,8 @@ FORCE:
 
 $(B)/obj/%.o: %.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) $(EXTRA_CFLAGS) $(PGO_DUMPNAME) -c $< -o $@
+	$(quiet) "  CC      $<"
+	$(Q)$(CC) $(ALL_CFLAGS) $(EXTRA_CFLAGS) $(PGO_DUMPNAME) -c $< -o $@
 
 # With PGO=1 every library object waits for the profile: the stamp below
 # is rewritten only when the instrumented program had to be rebuilt (a
@@ -201,7 +214,7 @@ LIB_OBJS := $(foreach l,$(LAYERS),$(call lib_objs,$(l)))
 $(LIB_OBJS): EXTRA_CFLAGS := $(PGO_USE_FLAGS)
 $(LIB_OBJS): $(PGO_STAMP)
 $(PGO_STAMP): FORCE
-	@$(MAKE) --no-print-directory B=$(B)/pgo-train PGO=gen PGO_DIR=$(PGO_DIR) \
+	@$(MAKE) --no-print-directory B=$(B)/pgo-train PGO=gen PGO_DIR=$(PGO_DIR) V=$(V) \
 	  $(B)/pgo-train/bin/cornell_box
 	@if [ ! -f $@ ] || [ $(B)/pgo-train/bin/cornell_box -nt $@ ]; then \
 	  sh tools/pgo_train.sh $(B)/pgo-train/bin/cornell_box $(PGO_DIR) && touch $@; fi
@@ -210,34 +223,40 @@ endif
 define layer_rule
 $(B)/lib/lib$(1).a: $(call lib_objs,$(1))
 	@mkdir -p $$(@D)
-	rm -f $$@
-	$$(if $$^,$(AR) rcs $$@ $$^,$(AR) rcs $$@)
+	$$(quiet) "  AR      $$@"
+	$$(Q)rm -f $$@
+	$$(Q)$$(if $$^,$(AR) rcs $$@ $$^,$(AR) rcs $$@)
 endef
 $(foreach l,$(LAYERS),$(eval $(call layer_rule,$(l))))
 
 $(APP_LIB): $(patsubst %.c,$(B)/obj/%.o,$(APP_SRCS))
 	@mkdir -p $(@D)
-	rm -f $@
-	$(AR) rcs $@ $^
+	$(quiet) "  AR      $@"
+	$(Q)rm -f $@
+	$(Q)$(AR) rcs $@ $^
 
 $(SUPPORT_LIB): $(patsubst %.c,$(B)/obj/%.o,$(SUPPORT_SRCS))
 	@mkdir -p $(@D)
-	rm -f $@
-	$(AR) rcs $@ $^
+	$(quiet) "  AR      $@"
+	$(Q)rm -f $@
+	$(Q)$(AR) rcs $@ $^
 
 # Link order is the layer order: a wrong-way call is an undefined symbol.
 LINK_LAYERS := $(foreach l,$(LAYERS),$(B)/lib/lib$(l).a)
 
 $(B)/bin/%: $(B)/obj/examples/%.o $(APP_LIB) $(LIBFILES)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_LDFLAGS) $< $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
+	$(quiet) "  LD      $@"
+	$(Q)$(CC) $(ALL_LDFLAGS) $< $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
 
 $(B)/bench/%: $(B)/obj/bench/%.o $(APP_LIB) $(LIBFILES)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_LDFLAGS) $< $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
+	$(quiet) "  LD      $@"
+	$(Q)$(CC) $(ALL_LDFLAGS) $< $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
 
 $(B)/tests/%: $(B)/obj/tests/%.o $(SUPPORT_LIB) $(LIBFILES)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_LDFLAGS) $< $(SUPPORT_LIB) $(LINK_LAYERS) $(LIBS) $(TEST_LIBS) -o $@
+	$(quiet) "  LD      $@"
+	$(Q)$(CC) $(ALL_LDFLAGS) $< $(SUPPORT_LIB) $(LINK_LAYERS) $(LIBS) $(TEST_LIBS) -o $@
 
 -include $(shell find $(B)/obj -name '*.d' 2>/dev/null)

@@ -7,7 +7,11 @@
  *   build/bin/cornell_box --scene lambert --strategy uniform -o uniform.pfm
  * Prints the image's mean linear RGB (standard errors from the per-pixel
  * variances), the paths, ray segments and dropped non-finite samples, and
- * the time. Ctrl-C writes the image rendered so far and exits with 130.
+ * the time. Ctrl-C (SIGINT), SIGTERM and SIGHUP write the image rendered so
+ * far and exit with 128 + the signal's number (130 for Ctrl-C). The image
+ * goes to a temporary file beside the target, renamed over it only when
+ * complete: whatever stops the program, the target holds either the
+ * previous image or a complete new one.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -17,24 +21,25 @@
 #include <signal.h>
 #include <stdatomic.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/outfile.h"
 #include "render/render.h"
 #include "render/scenes.h"
 
 static const char *const prog = "cornell_box";
-static atomic_int interrupted; /* set by SIGINT, polled by the renderer */
+static atomic_int interrupted; /* the signal that stopped us, polled by the renderer */
 
 /* C17 7.14.1.1 allows a handler to touch only lock-free atomics: an
  * atomic_int that needed a lock could deadlock against the interrupted
  * thread. Require it to be always lock-free, not just sometimes. */
-_Static_assert(ATOMIC_INT_LOCK_FREE == 2, "the SIGINT handler needs a lock-free atomic_int");
+_Static_assert(ATOMIC_INT_LOCK_FREE == 2, "the signal handler needs a lock-free atomic_int");
 
-static void on_sigint(int sig)
+static void on_stop_signal(int sig)
 {
-    (void)sig;
-    atomic_store(&interrupted, 1);
+    atomic_store(&interrupted, sig);
 }
 
 typedef struct options {
@@ -48,18 +53,19 @@ static options parse(int argc, char **argv)
 {
     options o = {"book", "mixture", "2", "cornell.png", 600, 50, 0, 100, 1, false, false};
     const app_opt opts[] = {
-        {"--scene", APP_CHOICE, &o.scene, "the scene (book)", rt_scene_names, 0, 0},
-        {"--width", APP_INT, &o.width, "image width and height in pixels (600)", NULL, 1, 65536},
-        {"--spp", APP_COUNT, &o.spp, "samples per pixel (100)", NULL, 0, 0},
+        {"--scene", APP_CHOICE, &o.scene, "the scene (default book)", rt_scene_names, 0, 0},
+        {"--width", APP_INT, &o.width, "image width and height in pixels (default 600)", NULL, 1, 65536},
+        {"--spp", APP_COUNT, &o.spp, "samples per pixel (default 100)", NULL, 0, 0},
         {"--samples", APP_COUNT, &o.spp, "same as --spp", NULL, 0, 0},
-        {"--max-depth", APP_INT, &o.depth, "most ray segments per path (50)", NULL, 0, 1e6},
-        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (mixture)", rt_strategy_names, 0, 0},
-        {"--threads", APP_INT, &o.threads, "OpenMP threads, 0 for all (0)", NULL, 0, 4096},
-        {"--seed", APP_SEED, &o.seed, "random seed (1)", NULL, 0, 0},
-        {"-o", APP_STRING, &o.out, "output image .png, .ppm or .pfm (linear) (cornell.png)", NULL, 0, 0},
-        {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (2)", rt_gamma_names, 0, 0},
+        {"--max-depth", APP_INT, &o.depth, "most ray segments per path (default 50)", NULL, 0, 1e6},
+        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (default mixture)", rt_strategy_names, 0, 0},
+        {"--threads", APP_INT, &o.threads, "OpenMP threads, 0 for all, at most 64 per processor (default 0)",
+         NULL, 0, app_max_threads()},
+        {"--seed", APP_SEED, &o.seed, "random seed (default 1)", NULL, 0, 0},
+        {"-o", APP_STRING, &o.out, "output image .png, .ppm or .pfm (linear) (default cornell.png)", NULL, 0, 0},
+        {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (default 2)", rt_gamma_names, 0, 0},
         {"--csv", APP_FLAG, &o.csv, "print the mean linear RGB as CSV", NULL, 0, 0},
-        {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments (off)", NULL, 0, 0},
+        {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments (default off)", NULL, 0, 0},
     };
     app_parse(prog, "cornell_box [--scene S] [--width W] [--spp N] [--max-depth D] "
                     "[--strategy S] [--threads T] [--seed S] [-o FILE] [--gamma G] [--roulette]",
@@ -68,6 +74,24 @@ static options parse(int argc, char **argv)
         app_fail(prog, "--spp %llu is too many for a %dx%d image", (unsigned long long)o.spp, o.width,
                  o.width);
     return o;
+}
+
+/* Refuses (exit 2) an image whose buffers would not fit: the pixels
+ * (Welford sums), one generator per pixel, the 8-bit rows of a PNG, and
+ * 64 MB for the scene, the threads and the libraries. The limit is the
+ * physical memory, or the address-space limit when that is lower: past
+ * either, calloc fails late or the machine swaps for hours. */
+static void check_memory(const options *o)
+{
+    double pixels = (double)o->width * (double)o->width;
+    double need = pixels * (double)(sizeof(rt_pixel) + sizeof(mc_rng) + 3) + 64e6;
+    double have = (double)sysconf(_SC_PHYS_PAGES) * (double)sysconf(_SC_PAGE_SIZE);
+    struct rlimit rl;
+    if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (double)rl.rlim_cur < have)
+        have = (double)rl.rlim_cur;
+    if (have > 0.0 && need > have)
+        app_fail(prog, "--width %d needs about %.2f GB of memory, more than the %.2f GB available",
+                 o->width, need * 1e-9, have * 1e-9);
 }
 
 /* The progress line: percent, elapsed, estimated time left, throughput. */
@@ -87,7 +111,16 @@ static void report(const options *o, const rt_image *img, const rt_render_stats 
 {
     mc_estimate rgb[3];
     rt_image_region_stats(img, 0, 0, img->width, img->height, rgb);
-    app_table t = {stdout, o->csv, NULL, 0};
+    /* region_stats counts a pixel of fewer than 2 samples as variance 0;
+     * with such pixels (--spp 1, or a render stopped in its first pass) the
+     * image's standard error cannot be estimated at all. */
+    uint64_t fewest = UINT64_MAX;
+    for (size_t i = 0; i < (size_t)img->width * (size_t)img->height; i++)
+        fewest = img->px[i].n < fewest ? img->px[i].n : fewest;
+    if (fewest < 2)
+        for (int c = 0; c < 3; c++)
+            rgb[c].std_error = (double)NAN;
+    app_table t = {stdout, o->csv, NULL, 0, "cornell_box"};
     app_table_begin(&t);
     static const char *const channel[3] = {"mean_linear_r", "mean_linear_g", "mean_linear_b"};
     for (int c = 0; c < 3; c++)
@@ -109,21 +142,29 @@ int main(int argc, char **argv)
      * one delivery, and a second Ctrl-C would then kill us mid-write.
      * SA_RESTART keeps a write(2) in progress from failing with EINTR. */
     struct sigaction sa = {0};
-    sa.sa_handler = on_sigint;
+    sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
     sa.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &sa, NULL);
+    /* SIGTERM is what timeout(1) and batch schedulers send, SIGHUP what a
+     * closed terminal sends: both deserve the image so far, like Ctrl-C. */
+    static const int stop_signals[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++)
+        sigaction(stop_signals[i], &sa, NULL);
     options o = parse(argc, argv);
     rt_format format = rt_format_from_path(o.out);
     if (format == RT_FORMAT_UNKNOWN)
         app_fail(prog, "-o %s: the extension must be .png, .ppm or .pfm", o.out);
-    FILE *f = fopen(o.out, "wb");
-    if (!f)
+    check_memory(&o);
+    app_outfile out;
+    if (!app_outfile_open(&out, o.out))
         app_fail(prog, "cannot write '%s': %s", o.out, strerror(errno));
     rt_camera_params cp;
     rt_scene *scene = rt_scene_named(o.scene, &cp);
     rt_image *img = rt_image_create(o.width, o.width);
     if (!scene || !img) {
+        rt_image_destroy(img);
+        rt_scene_destroy(scene);
+        app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
     }
@@ -139,25 +180,49 @@ int main(int argc, char **argv)
     job.cancel = &interrupted;
     double clock[2] = {omp_get_wtime(), 0.0};
     bool tty = isatty(fileno(stderr));
+    /* Without a terminal for the progress line, a long render says once,
+     * at the start, how long it will take: about 2 Mpaths/s per thread
+     * for the book's scene (make bench), less for deeper paths. */
+    if (!tty) {
+        double paths = (double)o.width * (double)o.width * (double)o.spp;
+        int nt = app_threads_used(o.threads);
+        char what[192];
+        snprintf(what, sizeof what,
+                 "%.3g paths on %d thread(s), at about 2 Mpaths/s each; SIGINT or SIGTERM writes "
+                 "the image so far",
+                 paths, nt);
+        app_announce(prog, paths / (2e6 * nt), what);
+    }
     job.progress = tty ? show_progress : NULL;
     job.progress_ctx = clock;
     rt_render_stats st;
     if (rt_render(&job, img, &st) < 0) {
+        rt_image_destroy(img);
+        rt_scene_destroy(scene);
+        app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
     }
     if (tty)
         fputc('\n', stderr);
-    if (rt_image_write(img, f, format, gamma) != 0 || fclose(f) != 0) {
-        fprintf(stderr, "%s: error writing '%s'\n", prog, o.out);
+    errno = 0;
+    if (rt_image_write(img, out.f, format, gamma) != 0 || !app_outfile_commit(&out)) {
+        int e = errno;
+        rt_image_destroy(img);
+        rt_scene_destroy(scene);
+        app_outfile_abort(&out);
+        fprintf(stderr, "%s: error writing '%s'%s%s; it was left as it was\n", prog, o.out,
+                e ? ": " : "", e ? strerror(e) : "");
         return 1;
     }
     report(&o, img, &st);
+    int sig = atomic_load(&interrupted);
     if (st.cancelled)
-        fprintf(stderr, "%s: interrupted: %s holds %llu samples (%.2f per pixel of the %llu asked)\n",
-                prog, o.out, (unsigned long long)st.paths, (double)st.paths / ((double)o.width * o.width),
+        fprintf(stderr, "%s: %s: %s holds %llu samples (%.2f per pixel of the %llu asked)\n",
+                prog, sig == SIGTERM ? "terminated" : sig == SIGHUP ? "hung up" : "interrupted", o.out,
+                (unsigned long long)st.paths, (double)st.paths / ((double)o.width * o.width),
                 (unsigned long long)o.spp);
     rt_image_destroy(img);
     rt_scene_destroy(scene);
-    return st.cancelled ? 130 : 0;
+    return st.cancelled ? 128 + sig : 0;
 }

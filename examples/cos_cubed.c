@@ -45,7 +45,7 @@ int main(int argc, char **argv)
     /* BEGIN SNIPPET cos_cubed_methods */
     const pdf_warp warps[2] = {{smp_uniform_hemisphere_sample, smp_uniform_hemisphere_pdf},
                                {smp_cosine_hemisphere_sample, smp_cosine_hemisphere_pdf}};
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "cos_cubed"};
     app_table_begin(&t);
     for (int m = 0; m < 2; m++) {
         if (!app_selected(method, methods[m]))

@@ -61,7 +61,7 @@ int main(int argc, char **argv)
     free(s);
     /* END SNIPPET halfway_main */
 
-    app_table t = {stdout, csv, NULL, 0};
+    app_table t = {stdout, csv, NULL, 0, "estimate_halfway"};
     app_table_begin(&t);
     app_table_row(&t, "integral", integral, EXACT_INTEGRAL, NULL);
     app_table_row(&t, "halfway", halfway, EXACT_HALFWAY, NULL);

@@ -102,7 +102,7 @@ int main(int argc, char **argv)
         !smp_alias_init(&alias, weights, EVENTS, alias_storage))
         app_fail("inverse_cdf", "invalid event weights");
 
-    app_table t = {stdout, csv, extra_cols, 3};
+    app_table t = {stdout, csv, extra_cols, 3, "inverse_cdf"};
     app_table_begin(&t);
     sine(&t, seed, n);
     events(&t, "discrete_cdf", &cdf, NULL, seed, n);

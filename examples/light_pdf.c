@@ -71,7 +71,7 @@ int main(int argc, char **argv)
     double exact = pdf_polygon_irradiance(origin, up, corners, 4, l.radiance);
     const pdf pdfs[2] = {pdf_toward_quad(origin, l.corner, l.u, l.v), pdf_cosine(up)};
 
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "light_pdf"};
     app_table_begin(&t);
     for (int m = 0; m < 2; m++) {
         if (!app_selected(method, methods[m]))

@@ -51,7 +51,7 @@ int main(int argc, char **argv)
 
     const double exact = -MC_PI * MC_LN2;
     const mc_fn1 f = {log_sin, NULL};
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "log_sin"};
     app_table_begin(&t);
     /* BEGIN SNIPPET log_sin_estimators */
     if (app_selected(method, "plain")) {

@@ -92,7 +92,7 @@ int main(int argc, char **argv)
     } rows[5] = {{0, &cosine}, {0, &light}, {0, &mix}, {1, &cosine}, {1, &mix}};
     /* END SNIPPET mixture_build */
 
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "mixture"};
     app_table_begin(&t);
     for (int i = 0; i < 5; i++) {
         if (!app_selected(method, methods[i]))

@@ -86,7 +86,7 @@ static void print_cells(const mc_gof_spec *s, const double *obs, const double *e
 int main(int argc, char **argv)
 {
     uint64_t n = 100000, seed = 1;
-    int seeds = 200, nc = 16, np = 32;
+    int seeds = 0, nc = 16, np = 32; /* seeds 0: not given */
     const app_opt opts[] = {
         {"--samples", APP_COUNT, &n, "samples per test (default 1e5)", NULL, 0, 0},
         {"--seed", APP_SEED, &seed, "seed of the test (cells) or of the first test (pvalues)", NULL, 0, 0},
@@ -98,6 +98,9 @@ int main(int argc, char **argv)
     int npos = app_parse(PROG, PROG " cells|pvalues [options]", argc, argv, opts, 5, cmd, 1);
     if (npos != 1 || (strcmp(cmd[0], "cells") != 0 && strcmp(cmd[0], "pvalues") != 0))
         app_fail(PROG, "expected the command 'cells' or 'pvalues' (see --help)");
+    if (seeds && strcmp(cmd[0], "cells") == 0)
+        app_fail(PROG, "--seeds is an option of pvalues, not of cells");
+    seeds = seeds ? seeds : 200;
 
     static double obs[64 * 64], expct[64 * 64];
     if (strcmp(cmd[0], "cells") == 0) {
@@ -107,19 +110,32 @@ int main(int argc, char **argv)
         (void)observe(&s, n, seed, obs);
         print_cells(&s, obs, expct);
     } else {
+        /* The expected counts do not depend on the seed: once per pair.
+         * Both pairs are checked before the header, so that a test that
+         * cannot decide (every cell pooled into one: no degrees of freedom,
+         * chi2 0 and p 1, a perfect pass) is refused, as `warp chi2` does,
+         * before any output. */
+        static double expected[2][64 * 64];
+        for (int c = 0; c < 2; c++) {
+            mc_gof_spec s = pair_spec(&pairs[c], nc, np);
+            if (mc_gof_expected(&s, n, expected[c]) != 0)
+                app_fail(PROG, "out of memory");
+            mc_chi2_result r0 =
+                mc_chi2_pearson(expected[c], expected[c], (size_t)(nc * np), MC_GOF_MIN_EXPECTED);
+            if (r0.dof < 1)
+                app_fail(PROG, "--samples %llu is too few for a chi-square test of %s (no degrees of freedom)",
+                         (unsigned long long)n, pairs[c].name);
+        }
         printf("case,seed,n,chi2,dof,p\n");
         for (int c = 0; c < 2; c++) {
             mc_gof_spec s = pair_spec(&pairs[c], nc, np);
-            /* The expected counts do not depend on the seed: once per pair. */
-            if (mc_gof_expected(&s, n, expct) != 0)
-                app_fail(PROG, "out of memory");
             for (int k = 0; k < seeds; k++) {
                 uint64_t sd = seed + (uint64_t)k;
                 if (observe(&s, n, sd, obs) > 0.0)
                     app_fail(PROG, "%s: a sample outside the rectangle (seed %llu)",
                              pairs[c].name, (unsigned long long)sd);
                 mc_chi2_result r =
-                    mc_chi2_pearson(obs, expct, (size_t)(nc * np), MC_GOF_MIN_EXPECTED);
+                    mc_chi2_pearson(obs, expected[c], (size_t)(nc * np), MC_GOF_MIN_EXPECTED);
                 printf("%s,%llu,%llu,%.6f,%d,%.6e\n", pairs[c].name, (unsigned long long)sd,
                        (unsigned long long)n, r.stat, r.dof, r.pvalue);
             }

@@ -49,7 +49,7 @@ int main(int argc, char **argv)
 
     const pdf_body box = {true, vec3_make(1.1925, 0.5, 0.25), 0.0};
     const pdf_body sphere = {false, vec3_make(0.0, 0.0, 0.0), 1.0};
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "projected_area"};
     app_table_begin(&t);
     if (app_selected(body, "box")) {
         run(&t, "box-exact", box, false, seed, 0u, n);

@@ -63,7 +63,7 @@ int main(int argc, char **argv)
               "S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
 
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "sphere_importance"};
     app_table_begin(&t);
     const double exact = MC_4PI / 3.0;
     /* BEGIN SNIPPET sphere_methods */

@@ -44,7 +44,11 @@ int main(int argc, char **argv)
         {"--samples", APP_COUNT, &n, "samples per method (default 1e6)", NULL, 0, 0},
         APP_OPT_SEED(&seed),
         {"--method", APP_CHOICE, &method, "sampling strategy (default all)", methods, 0, 0},
-        {"--flux", APP_DOUBLE, &flux, "the light's flux Phi (default 10)", NULL, 1e-300, 1e300},
+        /* Squared radiances enter the variance: beyond 1e+-100 they would
+         * underflow to 0 or overflow, and the table would print a standard
+         * error of 0 or inf. */
+        {"--flux", APP_DOUBLE, &flux, "the light's flux Phi, 1e-100 to 1e100 (default 10)", NULL,
+         1e-100, 1e100},
         {"--radius", APP_DOUBLE, &radius, "the light's radius r (default 0.5)", NULL, 1e-6, 1e6},
         {"--distance", APP_DOUBLE, &dist, "distance d to its centre (default 3)", NULL, 1e-6, 1e6},
         {"--theta", APP_DOUBLE, &theta_deg, "angle from the normal, degrees (default 30)", NULL,
@@ -67,7 +71,7 @@ int main(int argc, char **argv)
     double radiance = flux / (MC_4PI * MC_PI * radius * radius);
     double exact = pdf_sphere_light_irradiance(flux, dist, cos(theta));
 
-    app_table t = {stdout, csv, extra_cols, 1};
+    app_table t = {stdout, csv, extra_cols, 1, "sphere_light"};
     app_table_begin(&t);
     if (app_selected(method, "area")) {
         mc_rng rng = mc_rng_derive(seed, 0u);

@@ -5,7 +5,8 @@
  *   warp sample NAME [--param k=v]... [--n N] [--seed S]   one point per line
  *   warp pdf NAME [--param k=v]...     points on stdin -> one density per line
  *   warp chi2 NAME [--param k=v]... [--n N] [--seed S] [--alpha A]
- *                                                  prints: chi2 dof p verdict
+ *                                   prints a header "chi2 dof p verdict" and
+ *                                   one line of the four values
  *
  * Points are written and read as in `sample`: directions `x y z`, planar
  * points `x y`, reals `x`, discrete outcomes the index; numbers in %.17g.
@@ -20,6 +21,7 @@
  *                     build/bin/warp pdf phong --param n=10
  *                 build/bin/warp chi2 mixture --param w=0.2
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,14 +38,17 @@ static const char USAGE[] =
     "       warp sample NAME [--param k=v]... [--n N] [--seed S]\n"
     "       warp pdf NAME [--param k=v]...      (points on stdin)\n"
     "       warp chi2 NAME [--param k=v]... [--n N] [--seed S] [--alpha A]\n"
-    "--samples is a synonym of --n. chi2 exits 0 on pass, 1 on fail; bad input exits 2.\n";
+    "--samples is a synonym of --n. chi2 exits 0 on pass, 1 on fail; bad input exits 2.\n"
+    "A command refuses the options it does not take (list takes none, pdf only --param).\n"
+    "pdf of discrete and alias reads outcome indices: whole numbers from 0 to k-1.\n"
+    APP_NUMBER_GRAMMAR "\n";
 
 typedef struct args {
     const char *command, *name;
     const char *params[MAX_PARAMS];
     int n_params;
     uint64_t n, seed;
-    bool have_n;
+    bool have_n, have_seed, have_alpha;
     double alpha;
 } args;
 
@@ -65,7 +70,7 @@ static bool is_option(const char *a, const char *name)
 
 static args parse(int argc, char **argv)
 {
-    args a = {NULL, NULL, {NULL}, 0, 1000, 1, false, 0.01};
+    args a = {NULL, NULL, {NULL}, 0, 1000, 1, false, false, false, 0.01};
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
@@ -84,15 +89,23 @@ static args parse(int argc, char **argv)
             const char *v = option_value(argc, argv, &i, s[3] == 'a' ? 9 : 3);
             if (!app_parse_count(v, APP_MAX_SAMPLES, &a.n))
                 app_fail(PROG, "--n: '%s' is not a whole number from 1 to 1e13", v);
+            if (a.have_n)
+                app_fail(PROG, "--n given twice (or with its synonym --samples)");
             a.have_n = true;
         } else if (is_option(s, "--seed")) {
             const char *v = option_value(argc, argv, &i, 6);
             if (!app_parse_seed(v, &a.seed))
-                app_fail(PROG, "--seed: '%s' is not an unsigned 64-bit integer", v);
+                app_fail(PROG, "--seed: '%s' is not a whole number from 0 to 2^64 - 1", v);
+            if (a.have_seed)
+                app_fail(PROG, "--seed given twice");
+            a.have_seed = true;
         } else if (is_option(s, "--alpha")) {
             const char *v = option_value(argc, argv, &i, 7);
             if (!app_parse_double(v, &a.alpha) || !(a.alpha > 0.0 && a.alpha < 1.0))
                 app_fail(PROG, "--alpha: '%s' is not a number in (0, 1)", v);
+            if (a.have_alpha)
+                app_fail(PROG, "--alpha given twice");
+            a.have_alpha = true;
         } else if (s[0] == '-' && s[1] != '\0') {
             app_fail(PROG, "unknown option '%s' (see --help)", s);
         } else if (!a.command) {
@@ -105,6 +118,17 @@ static args parse(int argc, char **argv)
     }
     if (!a.command)
         app_fail(PROG, "no command (list, sample, pdf or chi2; see --help)");
+    /* Each command refuses what it would ignore: `warp list --n 3` or
+     * `warp pdf x --seed 2` is a mistake the user should hear about. */
+    bool list = strcmp(a.command, "list") == 0, densities_only = strcmp(a.command, "pdf") == 0,
+         sample = strcmp(a.command, "sample") == 0;
+    const char *extra = list && a.n_params ? "--param"
+                        : (list || densities_only) && a.have_n ? "--n"
+                        : (list || densities_only) && a.have_seed ? "--seed"
+                        : (list || densities_only || sample) && a.have_alpha ? "--alpha"
+                                                                  : NULL;
+    if (extra)
+        app_fail(PROG, "%s does not take %s (see --help)", a.command, extra);
     return a;
 }
 
@@ -154,6 +178,12 @@ static void densities(const warp_entry *e, const warp_state *s)
         if (*p)
             app_fail(PROG, "stdin line %ld: expected %d number%s", lineno, dims,
                      dims > 1 ? "s" : "");
+        /* An outcome is an index: 2.5 or -1 is a mistake in the input, not
+         * an outcome of probability 0. */
+        if (warp_point_kind(e) == WARP_INDEX &&
+            (x[0] != floor(x[0]) || x[0] < 0.0 || x[0] >= (double)s->p.n_weights))
+            app_fail(PROG, "stdin line %ld: '%g' is not an outcome index from 0 to %zu", lineno, x[0],
+                     s->p.n_weights - 1);
         if (dims == 3) { /* directions are normalized; (0, 0, 0) is none */
             double len = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
             if (!(len > 0.0))
@@ -191,7 +221,8 @@ static int chi2(const warp_entry *e, const warp_state *s, const args *a)
         app_fail(PROG, "--n %llu is too few samples for a chi-square test of '%s' (no degrees of freedom)",
                  (unsigned long long)n, a->name);
     }
-    printf("%.6f %d %.6g %s\n", r.r.stat, r.r.dof, r.r.pvalue, r.reject ? "fail" : "pass");
+    printf("chi2 dof p verdict\n%.6f %d %.6g %s\n", r.r.stat, r.r.dof, r.r.pvalue,
+           r.reject ? "fail" : "pass");
     free(obs);
     free(expct);
     return r.reject ? 1 : 0;

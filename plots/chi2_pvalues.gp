@@ -45,7 +45,7 @@ unset logscale y
 set yrange [0:1.05]
 set ytics 0.1
 set ylabel 'fraction of seeds with p-value ≤ x'
-set xlabel 'x'
+set xlabel 'p-value x'
 set key bottom right
 set title 'empirical distribution function of the p-values'
 ks = 1.358 / sqrt(seeds)

@@ -41,10 +41,10 @@ set title 'GGX half vectors, α = 0.5'
 set yrange [1e-3:300]
 plot f using (pick('ggx', '0.5') ? ($3 + $4) / 2 : NaN):6 with boxes lt 1 title 'sampled', \
      f using (pick('ggx', '0.5') ? ($3 + $4) / 2 : NaN):7 with histeps lc rgb '#000000' lw 1 title 'analytic, averaged over each bin', \
-     ggx(x, 0.5) with lines lt 2 title 'analytic 2α^2 c / (1 + c^2(α^2 - 1))^2'
+     ggx(x, 0.5) with lines lt 2 title 'analytic 2α^2 c / (1 + c^2(α^2 - 1))^2, c = cos θ_h'
 set title 'GGX half vectors, α = 0.25'
 set yrange [1e-3:100]
 plot f using (pick('ggx', '0.25') ? ($3 + $4) / 2 : NaN):6 with boxes lt 1 title 'sampled', \
      f using (pick('ggx', '0.25') ? ($3 + $4) / 2 : NaN):7 with histeps lc rgb '#000000' lw 1 title 'analytic, averaged over each bin', \
-     ggx(x, 0.25) with lines lt 2 title 'analytic 2α^2 c / (1 + c^2(α^2 - 1))^2'
+     ggx(x, 0.25) with lines lt 2 title 'analytic 2α^2 c / (1 + c^2(α^2 - 1))^2, c = cos θ_h'
 unset multiplot

@@ -34,7 +34,10 @@ set style fill solid 0.8 noborder
 set boxwidth 0.75
 # Bar x: the row index plus one gap per new problem (state kept in g).
 xpos(p) = ($0 == 0 ? (g = 1, prev = p) : p ne prev ? (g = g + 1, prev = p) : 0, $0 + g)
-colour(k) = int(k - 1) % 6 + 1
+# Ten distinct colours (Tableau 10, as 0xRRGGBB in decimal): one per
+# integral for up to ten integrals, where lt 1..6 of style.gp repeated.
+colours = "5142951 15896107 14767961 7780274 5873999 15583560 11565729 16752039 10253663 12234924"
+colour(k) = int(word(colours, int(k - 1) % 10 + 1))
 # One label per problem, centred over its bars: problems in order with their
 # first and last row (0-based), from the data file.
 groups = system("awk -F, 'NR > 1 { if ($1 != p) { if (p != \"\") print p, a, NR - 3; p = $1; a = NR - 2 } } END { print p, a, NR - 2 }' ".f)
@@ -45,5 +48,5 @@ do for [k = 1:ngroups] {
     set label k label(p) at centre, yhi / 4 center font ',10'
 }
 set xrange [-0.4 : E_records + ngroups + 0.9]
-plot f skip 1 using (xpos(strcol(1))):($8 > 0 ? $8 : NaN):(colour(g)):xtic(2) with boxes lc variable, \
+plot f skip 1 using (xpos(strcol(1))):($8 > 0 ? $8 : NaN):(colour(g)):xtic(2) with boxes lc rgb variable, \
      f skip 1 using (xpos(strcol(1))):($8 > 0 ? $8 : ylo * 2):($8 > 0 ? sprintf('%.1e', $8) : "0: zero variance") with labels offset 0, 0.7 font ',8'

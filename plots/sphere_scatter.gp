@@ -26,7 +26,7 @@ set urange [0:2*pi]; set vrange [0:1]
 set isosamples 2, 2
 set samples 200
 set key at screen 0.5, 0.07 center horizontal noopaque nobox
-set multiplot layout 1, 3 title sprintf("{/:Bold Three uniform samplers of the unit sphere} (%d points each; each claims the density 1/(4π) per unit solid angle)", S_records) font ',13' margins 0.02, 0.98, 0.1, 0.78 spacing 0.02, 0
+set multiplot layout 1, 3 title sprintf("{/:Bold Three uniform samplers of the unit sphere} (%d points each; each claims the density 1/(4π) per unit solid angle)\nPoints crowd toward each outline by projection alone: near the rim the sphere is seen edge-on, so equal areas look narrower.", S_records) font ',13' margins 0.02, 0.98, 0.1, 0.78 spacing 0.02, 0
 # Short stubs of the positive axes outside the sphere, for orientation.
 set arrow 1 from 1, 0, 0 to 1.3, 0, 0 lc rgb '#555555' lw 1.2 size 0.05, 20
 set arrow 2 from 0, 1, 0 to 0, 1.3, 0 lc rgb '#555555' lw 1.2 size 0.05, 20

@@ -285,6 +285,400 @@ static void test_cli_program(void **state)
         fail_msg("%s: %d violation(s) of the command-line contract (listed above)", name, bad);
 }
 
+/* --- statistics that cannot be estimated ---------------------------------- */
+
+/* Runs $MC_BUILD/bin/prog with args into r. */
+static void run_named(const char *prog, const char *const *args, run *r)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/bin/%s", mc_test_build_dir(), prog);
+    run_prog(path, args, r);
+}
+
+/* The line of r->out that starts with `method` (NULL if none), copied. */
+static const char *row_of(const run *r, const char *method, char *line, size_t size)
+{
+    size_t len = strlen(method);
+    for (const char *p = r->out; p && *p;) {
+        const char *eol = strchr(p, '\n');
+        size_t k = eol ? (size_t)(eol - p) : strlen(p);
+        if (k > len && strncmp(p, method, len) == 0 && (p[len] == ' ' || p[len] == ',')) {
+            snprintf(line, size, "%.*s", (int)k, p);
+            return line;
+        }
+        p = eol ? eol + 1 : NULL;
+    }
+    return NULL;
+}
+
+/* A standard error from fewer than 2 samples, or a sample variance of 0
+ * that only too few samples produce (every sample missed the light), is
+ * printed as n/a with its reason, never as 0; in CSV the stderr and z
+ * fields are empty and the reason goes to stderr. A zero-variance
+ * estimator's exact 0 stays a number. A chi-square test with no degrees
+ * of freedom is refused with exit 2 before any output. */
+static void test_cli_statistics_na(void **state)
+{
+    (void)state;
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    char line[1024];
+    const char *pi1[] = {"--samples", "1", NULL};
+    run_named("pi", pi1, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(row_of(r, "plain", line, sizeof line));
+    if (!strstr(line, "n/a") || !strstr(line, "fewer than 2 samples"))
+        fail_msg("pi --samples 1: '%s'", line);
+    const char *light5[] = {"--samples", "5", NULL};
+    run_named("light_pdf", light5, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(row_of(r, "cosine", line, sizeof line));
+    if (!strstr(line, "n/a") || strstr(line, "0.000e+00"))
+        fail_msg("light_pdf --samples 5, cosine row: '%s'", line);
+    const char *mix5[] = {"--samples", "5", "--csv", NULL};
+    run_named("mixture", mix5, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(row_of(r, "light-cosine", line, sizeof line));
+    /* method,n,estimate,stderr,exact,z,variance: stderr and z empty. */
+    char method[64];
+    unsigned long long n;
+    double est, exact;
+    int used = 0;
+    if (sscanf(line, "%63[^,],%llu,%lf,,%lf,,%n", method, &n, &est, &exact, &used) != 4 || used == 0)
+        fail_msg("mixture --samples 5 --csv, light-cosine: '%s'", line);
+    if (!strstr(r->err, "light-cosine: stderr and z n/a"))
+        fail_msg("mixture --csv: no reason on stderr: '%s'", r->err);
+    const char *xsq[] = {"--pdf", "quadratic", "--samples", "1000", NULL};
+    run_named("integrate_x_sq", xsq, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(row_of(r, "quadratic", line, sizeof line));
+    if (strstr(line, "n/a"))
+        fail_msg("integrate_x_sq quadratic (zero variance, exact): '%s'", line);
+    const char *chi5[] = {"pvalues", "--samples", "5", "--seeds", "2", NULL};
+    run_named("plotdata_chi2", chi5, r);
+    char why[512];
+    if (judge_bad("plotdata_chi2", r, why, sizeof why))
+        fail_msg("plotdata_chi2 pvalues --samples 5: %s", why);
+    const char *tiny_flux[] = {"--flux", "1e-300", NULL};
+    run_named("sphere_light", tiny_flux, r);
+    if (judge_bad("sphere_light", r, why, sizeof why))
+        fail_msg("sphere_light --flux 1e-300: %s", why);
+    free(r);
+}
+
+/* --- one grammar, one answer ---------------------------------------------- */
+
+/* Whether `cmd` (shell syntax, run from the build directory's bin) exits
+ * 2 with one line on stderr naming `name` and nothing on stdout. */
+static bool shell_refuses(const char *name, const char *cmd)
+{
+    char full[2048];
+    const char *b = mc_test_build_dir();
+    snprintf(full, sizeof full, "cd %s/bin && %s >../cli_g.out 2>../cli_g.err", b, cmd);
+    int rc = system(full);
+    run r;
+    memset(&r, 0, sizeof r);
+    r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/cli_g.out", b);
+    FILE *f = fopen(path, "rb");
+    if (f) {
+        r.out_len = fread(r.out, 1, CAPTURE - 1, f);
+        fclose(f);
+    }
+    snprintf(path, sizeof path, "%s/cli_g.err", b);
+    f = fopen(path, "rb");
+    if (f) {
+        r.err_len = fread(r.err, 1, CAPTURE - 1, f);
+        fclose(f);
+    }
+    char why[512];
+    if (judge_bad(name, &r, why, sizeof why)) {
+        printf("'%s': %s\n", cmd, why);
+        return false;
+    }
+    return true;
+}
+
+/* Counts and seeds share one grammar (1e3 is a seed as it is a count; 1.5
+ * is neither); an option given twice, an option the subcommand does not
+ * take, a discrete outcome that is not an index and a thread count past
+ * the machine's limit are refused before any output; --help names each
+ * default once. */
+static void test_cli_one_grammar(void **state)
+{
+    (void)state;
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    static const char *const good[][7] = {
+        {"pi", "--seed", "1e3", "--samples", "1e3", NULL},
+        {"pi", "--seed", "0x3e8", "--samples", "0x3e8", NULL},
+        {"pi", "--samples", "2.5e3", "--threads", "1e0", NULL},
+    };
+    for (size_t i = 0; i < sizeof good / sizeof good[0]; i++) {
+        run_named(good[i][0], good[i] + 1, r);
+        if (r->status != 0)
+            fail_msg("%s %s %s %s %s: exit %d, '%s'", good[i][0], good[i][1], good[i][2], good[i][3],
+                     good[i][4], r->status, r->err);
+    }
+    char threads[64];
+    snprintf(threads, sizeof threads, "%ld", 64 * sysconf(_SC_NPROCESSORS_ONLN) + 1);
+    const char *const bad[][8] = {
+        {"pi", "--seed", "1.5", NULL},
+        {"pi", "--samples", "1.5", NULL},
+        {"pi", "--seed", "-1", NULL},
+        {"pi", "--samples", " 5", NULL},
+        {"pi", "--samples", "10", "--samples", "20", NULL},
+        {"pi", "--threads", threads, NULL},
+        {"cornell_box", "--threads", threads, "--width", "4", NULL},
+        {"cornell_box", "--spp", "2", "--samples", "3", NULL},
+        {"warp", "list", "--n", "3", NULL},
+        {"warp", "pdf", "cosine", "--seed", "3", NULL},
+        {"warp", "sample", "cosine", "--alpha", "0.1", NULL},
+        {"warp", "sample", "cosine", "--seed", "1", "--seed", "2", NULL},
+        {"plotdata_chi2", "cells", "--seeds", "3", NULL},
+    };
+    int failures = 0;
+    char why[512];
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        run_named(bad[i][0], bad[i] + 1, r);
+        if (judge_bad(bad[i][0], r, why, sizeof why)) {
+            printf("%s %s %s ...: %s\n", bad[i][0], bad[i][1], bad[i][2] ? bad[i][2] : "", why);
+            failures++;
+        }
+    }
+    failures += !shell_refuses("warp", "printf '2.5\\n' | ./warp pdf discrete");
+    failures += !shell_refuses("warp", "printf -- '-1\\n' | ./warp pdf alias");
+    failures += !shell_refuses("warp", "printf '8\\n' | ./warp pdf discrete");
+    const char *help[] = {"--help", NULL};
+    run_named("cornell_box", help, r);
+    if (strstr(r->out, "(book) (") || !strstr(r->out, "default book") || !strstr(r->out, "1e3"))
+        fail_msg("cornell_box --help: the default twice, or no grammar: '%.400s'", r->out);
+    free(r);
+    if (failures)
+        fail_msg("%d case(s) above were accepted or broke the contract", failures);
+}
+
+/* A run estimated to take more than a few seconds says so on stderr when
+ * it starts (stderr is not a terminal here), in one line naming the
+ * program and the time; a short run says nothing. The long runs are
+ * stopped after 2 s (pi by SIGKILL, cornell_box by SIGTERM). */
+static void test_cli_long_runs_announce(void **state)
+{
+    (void)state;
+    const char *b = mc_test_build_dir();
+    static const char *const cmds[] = {
+        "timeout -s KILL 2 ./pi --samples 1e13 --threads 1",
+        "timeout -s TERM 2 ./cornell_box --spp 1e13 --width 8 --threads 1 -o ../cli_long.png",
+    };
+    char full[2048], err[4096];
+    for (int i = 0; i < 2; i++) {
+        snprintf(full, sizeof full, "cd %s/bin && %s >/dev/null 2>../cli_long.err", b, cmds[i]);
+        (void)system(full);
+        snprintf(full, sizeof full, "%s/cli_long.err", b);
+        FILE *f = fopen(full, "rb");
+        assert_non_null(f);
+        size_t n = fread(err, 1, sizeof err - 1, f);
+        err[n] = '\0';
+        fclose(f);
+        const char *name = i ? "cornell_box: about " : "pi: about ";
+        if (strncmp(err, name, strlen(name)) != 0 || !strstr(err, " for "))
+            fail_msg("'%s': no announcement of its time: '%s'", cmds[i], err);
+    }
+    snprintf(full, sizeof full, "%s/cli_long.png", b);
+    remove(full);
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    const char *quick[] = {"--samples", "1e5", NULL};
+    run_named("pi", quick, r);
+    if (r->status != 0 || r->err_len != 0)
+        fail_msg("pi --samples 1e5: exit %d, stderr '%s'", r->status, r->err);
+    free(r);
+}
+
+/* --- the bad-input matrix -------------------------------------------------- */
+
+/* Every option of every program, one row each: a new option or program is
+ * covered by adding a row. `fast` are options that keep an accidental
+ * acceptance short; the option under test is left out of them. */
+typedef enum opt_kind { K_COUNT, K_SEED, K_WHOLE, K_REAL, K_CHOICE, K_FLAG, K_PATH } opt_kind;
+
+typedef struct matrix_prog {
+    const char *name;
+    const char *pre[3];   /* subcommand words, NULL-terminated */
+    const char *fast[10]; /* option, value pairs, NULL-terminated */
+} matrix_prog;
+
+typedef struct matrix_row {
+    int prog;           /* index into matrix_progs */
+    const char *option; /* with its dashes */
+    opt_kind kind;
+    const char *good;   /* a valid value (the repeated-option case) */
+} matrix_row;
+
+static const matrix_prog matrix_progs[] = {
+    {"cornell_box", {NULL}, {"--width", "4", "--spp", "1", "-o", "/tmp/mcbox-matrix.png", NULL}},
+    {"cos_cubed", {NULL}, {"--samples", "100", NULL}},
+    {"estimate_halfway", {NULL}, {"--samples", "100", NULL}},
+    {"integrate_x_sq", {NULL}, {"--samples", "100", NULL}},
+    {"inverse_cdf", {NULL}, {"--samples", "100", NULL}},
+    {"light_pdf", {NULL}, {"--samples", "100", NULL}},
+    {"log_sin", {NULL}, {"--samples", "100", NULL}},
+    {"mixture", {NULL}, {"--samples", "100", NULL}},
+    {"pi", {NULL}, {"--samples", "100", NULL}},
+    {"plotdata_chi2", {"pvalues", NULL}, {"--samples", "2000", "--seeds", "1", NULL}},
+    {"projected_area", {NULL}, {"--samples", "100", NULL}},
+    {"sphere_importance", {NULL}, {"--samples", "100", NULL}},
+    {"sphere_light", {NULL}, {"--samples", "100", NULL}},
+    {"sphere_plot", {NULL}, {"--samples", "100", NULL}},
+    {"warp", {"sample", "cosine", NULL}, {"--n", "10", NULL}},
+    {"warp", {"chi2", "cosine", NULL}, {"--n", "2000", NULL}},
+};
+
+static const matrix_row matrix_rows[] = {
+    {0, "--scene", K_CHOICE, "book"}, {0, "--width", K_WHOLE, "4"}, {0, "--spp", K_COUNT, "1"},
+    {0, "--samples", K_COUNT, "1"}, {0, "--max-depth", K_WHOLE, "3"}, {0, "--strategy", K_CHOICE, "mis"},
+    {0, "--threads", K_WHOLE, "1"}, {0, "--seed", K_SEED, "2"}, {0, "-o", K_PATH, "/tmp/mcbox-matrix.png"},
+    {0, "--gamma", K_CHOICE, "srgb"}, {0, "--csv", K_FLAG, NULL}, {0, "--roulette", K_FLAG, NULL},
+    {1, "--samples", K_COUNT, "100"}, {1, "--seed", K_SEED, "2"}, {1, "--method", K_CHOICE, "all"},
+    {1, "--csv", K_FLAG, NULL},
+    {2, "--samples", K_COUNT, "100"}, {2, "--seed", K_SEED, "2"}, {2, "--csv", K_FLAG, NULL},
+    {3, "--samples", K_COUNT, "100"}, {3, "--seed", K_SEED, "2"}, {3, "--pdf", K_CHOICE, "all"},
+    {3, "--csv", K_FLAG, NULL},
+    {4, "--samples", K_COUNT, "100"}, {4, "--seed", K_SEED, "2"}, {4, "--csv", K_FLAG, NULL},
+    {5, "--samples", K_COUNT, "100"}, {5, "--seed", K_SEED, "2"}, {5, "--method", K_CHOICE, "all"},
+    {5, "--csv", K_FLAG, NULL},
+    {6, "--samples", K_COUNT, "100"}, {6, "--seed", K_SEED, "2"}, {6, "--method", K_CHOICE, "all"},
+    {6, "--csv", K_FLAG, NULL},
+    {7, "--samples", K_COUNT, "100"}, {7, "--seed", K_SEED, "2"}, {7, "--method", K_CHOICE, "all"},
+    {7, "--csv", K_FLAG, NULL},
+    {8, "--samples", K_COUNT, "100"}, {8, "--seed", K_SEED, "2"}, {8, "--method", K_CHOICE, "all"},
+    {8, "--threads", K_WHOLE, "1"}, {8, "--csv", K_FLAG, NULL},
+    {9, "--samples", K_COUNT, "2000"}, {9, "--seed", K_SEED, "2"}, {9, "--seeds", K_WHOLE, "1"},
+    {9, "--cos-cells", K_WHOLE, "4"}, {9, "--phi-cells", K_WHOLE, "4"},
+    {10, "--samples", K_COUNT, "100"}, {10, "--seed", K_SEED, "2"}, {10, "--body", K_CHOICE, "all"},
+    {10, "--csv", K_FLAG, NULL},
+    {11, "--samples", K_COUNT, "100"}, {11, "--seed", K_SEED, "2"}, {11, "--method", K_CHOICE, "all"},
+    {11, "--csv", K_FLAG, NULL},
+    {12, "--samples", K_COUNT, "100"}, {12, "--seed", K_SEED, "2"}, {12, "--method", K_CHOICE, "all"},
+    {12, "--flux", K_REAL, "10"}, {12, "--radius", K_REAL, "0.5"}, {12, "--distance", K_REAL, "3"},
+    {12, "--theta", K_REAL, "30"}, {12, "--csv", K_FLAG, NULL},
+    {13, "--samples", K_COUNT, "100"}, {13, "--seed", K_SEED, "2"}, {13, "--method", K_CHOICE, "inverse"},
+    {14, "--n", K_COUNT, "10"}, {14, "--samples", K_COUNT, "10"}, {14, "--seed", K_SEED, "2"},
+    {14, "--param", K_CHOICE, NULL},
+    {15, "--n", K_COUNT, "2000"}, {15, "--seed", K_SEED, "2"}, {15, "--alpha", K_REAL, "0.01"},
+};
+
+/* The bad values of each kind (the option's own range decides for the
+ * whole-number and real kinds: every value here is outside all of them). */
+static const char *const *bad_values(opt_kind k)
+{
+    static const char *const count[] = {"-3", "0", "1e30", "abc", "", "nan", "inf", "1.5", " 5", "0x", NULL};
+    static const char *const seed[] = {"-1", "abc", "", "nan", "inf", "1.5", "1e20", "0x", " 1", NULL};
+    static const char *const whole[] = {"-1e9", "1e30", "abc", "", "nan", "inf", "1.5", NULL};
+    static const char *const real[] = {"-1e9", "1e300", "abc", "", "nan", "inf", "-inf", NULL};
+    static const char *const choice[] = {"nope", "", NULL};
+    static const char *const path[] = {"/tmp", "/nonexistent-dir/x.png", "/proc/mcbox-x.png", "",
+                                       "/tmp/mcbox-matrix.jpg", NULL};
+    static const char *const none[] = {NULL};
+    switch (k) {
+    case K_COUNT: return count;
+    case K_SEED: return seed;
+    case K_WHOLE: return whole;
+    case K_REAL: return real;
+    case K_CHOICE: return choice;
+    case K_PATH: return path;
+    case K_FLAG: return none;
+    }
+    return none;
+}
+
+/* Builds the arguments: the program's subcommand words, its fast options
+ * except `skip`, then the case's words. */
+static int matrix_args(const matrix_prog *p, const char *skip, const char *const *words, const char **args)
+{
+    int k = 0;
+    for (int i = 0; p->pre[i]; i++)
+        args[k++] = p->pre[i];
+    for (int i = 0; p->fast[i]; i += 2)
+        if (!skip || strcmp(p->fast[i], skip) != 0) {
+            args[k++] = p->fast[i];
+            args[k++] = p->fast[i + 1];
+        }
+    for (int i = 0; words[i]; i++)
+        args[k++] = words[i];
+    args[k] = NULL;
+    return k;
+}
+
+/* Runs one case; returns whether it met the contract (printing it if not). */
+static bool matrix_case(const matrix_prog *p, const char *skip, const char *const *words, run *r, int *cases)
+{
+    const char *args[16];
+    matrix_args(p, skip, words, args);
+    char path[1024], why[512];
+    snprintf(path, sizeof path, "%s/bin/%s", mc_test_build_dir(), p->name);
+    run_prog(path, args, r);
+    ++*cases;
+    if (!judge_bad(p->name, r, why, sizeof why))
+        return true;
+    printf("matrix: %s", p->name);
+    for (int i = 0; args[i]; i++)
+        printf(" '%s'", args[i]);
+    printf(": %s\n", why);
+    return false;
+}
+
+/* Every row's option with every bad value of its kind, with its value
+ * missing (last on the line) and given twice; every program with an
+ * unknown flag and a stray argument. Prints the count of cases and of
+ * those that met the contract; all must. */
+static void test_cli_bad_input_matrix(void **state)
+{
+    (void)state;
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    int cases = 0, met = 0;
+    const size_t n_progs = sizeof matrix_progs / sizeof matrix_progs[0];
+    for (size_t i = 0; i < sizeof matrix_rows / sizeof matrix_rows[0]; i++) {
+        const matrix_row *row = &matrix_rows[i];
+        const matrix_prog *p = &matrix_progs[row->prog];
+        const char *const *bad = bad_values(row->kind);
+        /* --param takes k=v: bad ones are an unknown key and a bad value. */
+        static const char *const param_bad[] = {"nope=1", "n=abc", "", "n", NULL};
+        if (row->good == NULL && row->kind == K_CHOICE)
+            bad = param_bad;
+        for (int v = 0; bad[v]; v++) {
+            const char *w[] = {row->option, bad[v], NULL};
+            met += matrix_case(p, row->option, w, r, &cases);
+        }
+        if (row->kind == K_FLAG) {
+            char with_value[64];
+            snprintf(with_value, sizeof with_value, "%s=1", row->option);
+            const char *w1[] = {with_value, NULL}, *w2[] = {row->option, row->option, NULL};
+            met += matrix_case(p, row->option, w1, r, &cases);
+            met += matrix_case(p, row->option, w2, r, &cases);
+            continue;
+        }
+        const char *missing[] = {row->option, NULL};
+        met += matrix_case(p, row->option, missing, r, &cases);
+        if (row->good) {
+            const char *twice[] = {row->option, row->good, row->option, row->good, NULL};
+            met += matrix_case(p, row->option, twice, r, &cases);
+        }
+    }
+    for (size_t i = 0; i < n_progs; i++) {
+        const char *unknown[] = {"--no-such-flag", "1", NULL}, *stray[] = {"stray", NULL};
+        met += matrix_case(&matrix_progs[i], NULL, unknown, r, &cases);
+        met += matrix_case(&matrix_progs[i], NULL, stray, r, &cases);
+    }
+    free(r);
+    remove("/tmp/mcbox-matrix.png");
+    printf("bad-input matrix: %d cases, %d met the contract\n", cases, met);
+    if (met != cases)
+        fail_msg("%d of %d bad-input cases broke the contract (listed above)", cases - met, cases);
+}
+
 /* --- negative controls ---------------------------------------------------- */
 
 static negctl tally;
@@ -365,7 +759,7 @@ static int by_name(const void *a, const void *b)
 int main(void)
 {
     static char *paths[MAX_PROGRAMS];
-    static struct CMUnitTest tests[MAX_PROGRAMS + 1];
+    static struct CMUnitTest tests[MAX_PROGRAMS + 5];
     static char names[MAX_PROGRAMS][96];
     size_t n = 0;
     /* Every program and every benchmark follows the same CLI rules. */
@@ -394,11 +788,16 @@ int main(void)
     }
     tests[0] = (struct CMUnitTest){"test_cli_negative_controls", test_cli_negative_controls, NULL, NULL,
                                    NULL};
+    tests[1] = (struct CMUnitTest){"test_cli_statistics_na", test_cli_statistics_na, NULL, NULL, NULL};
+    tests[2] = (struct CMUnitTest){"test_cli_one_grammar", test_cli_one_grammar, NULL, NULL, NULL};
+    tests[3] = (struct CMUnitTest){"test_cli_long_runs_announce", test_cli_long_runs_announce, NULL, NULL,
+                                   NULL};
+    tests[4] = (struct CMUnitTest){"test_cli_bad_input_matrix", test_cli_bad_input_matrix, NULL, NULL, NULL};
     for (size_t i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[i], "test_cli_%s", strrchr(paths[i], '/') + 1);
-        tests[i + 1] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
+        tests[i + 5] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
     }
-    int rc = _cmocka_run_group_tests("test_cli", tests, n + 1, NULL, report);
+    int rc = _cmocka_run_group_tests("test_cli", tests, n + 5, NULL, report);
     for (size_t i = 0; i < n; i++)
         free(paths[i]);
     return rc;

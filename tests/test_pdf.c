@@ -317,6 +317,36 @@ static void test_pdf_known_values(void **state)
     assert_near(pdf_value(&l, vec3_make(0.0, 1.0, 0.0)), 0.5 * MC_INV_PI, 1e-16);
 }
 
+/* Each bound the validity checks enforce, from both sides: a weight of
+ * exactly 0 is allowed (the header says >= 0) and the smallest negative
+ * one is not; a sum off by half the tolerance passes and by twice does
+ * not; a cosine lobe's normal must have length 1 within 1e-9, too short
+ * as well as too long. */
+static void test_pdf_validity_both_sides(void **state)
+{
+    (void)state;
+    double zero_first[2] = {0.0, 1.0}, zero_last[3] = {0.25, 0.75, 0.0};
+    assert_true(pdf_mixture_weights_valid(zero_first, 2));
+    assert_true(pdf_mixture_weights_valid(zero_last, 3));
+    double tiny_negative[2] = {-4.9e-324, 1.0};
+    assert_false(pdf_mixture_weights_valid(tiny_negative, 2));
+    double near_sum[2] = {0.5, 0.5 + 0.5 * PDF_WEIGHT_SUM_TOL}, far_sum[2] = {0.5, 0.5 + 2.0 * PDF_WEIGHT_SUM_TOL};
+    assert_true(pdf_mixture_weights_valid(near_sum, 2));
+    assert_false(pdf_mixture_weights_valid(far_sum, 2));
+    near_sum[1] = 0.5 - 0.5 * PDF_WEIGHT_SUM_TOL, far_sum[1] = 0.5 - 2.0 * PDF_WEIGHT_SUM_TOL;
+    assert_true(pdf_mixture_weights_valid(near_sum, 2));
+    assert_false(pdf_mixture_weights_valid(far_sum, 2));
+    /* The normal's length: 1 +- 1e-10 passes, 1 +- 1e-8 fails. */
+    static const double scale[4] = {1.0 + 1e-10, 1.0 - 1e-10, 1.0 + 1e-8, 1.0 - 1e-8};
+    vec3 n = vec3_normalize(vec3_make(0.36, -0.48, 0.8));
+    for (int i = 0; i < 4; i++) {
+        pdf c = pdf_cosine(n);
+        c.as.cosine.frame.n = vec3_scale(n, scale[i]);
+        if (pdf_valid(&c) != (i < 2))
+            fail_msg("cosine normal of length %.12f: pdf_valid says %d", scale[i], pdf_valid(&c));
+    }
+}
+
 static void test_pdf_validity(void **state)
 {
     (void)state;
@@ -695,6 +725,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pdf_known_values),
         cmocka_unit_test(test_pdf_validity),
+        cmocka_unit_test(test_pdf_validity_both_sides),
         cmocka_unit_test(test_pdf_mixture_zero_weight_never_chosen),
         cmocka_unit_test(test_pdf_chart_jacobians),
         cmocka_unit_test(test_pdf_domain),

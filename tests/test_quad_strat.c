@@ -56,6 +56,37 @@ static void test_quad_2d_known_integrals(void **state)
     mc_quad_destroy(q);
 }
 
+static double f_log_y(double x, double y, void *p) { (void)p; (void)x; return log(y); }
+
+/* The 2D error estimate is the outer one plus the largest inner one times
+ * the width x1 - x0: the same on [1000, 1001] as on [0, 1] for an
+ * integrand that does not depend on x (an estimate scaled by x1, or by x0,
+ * would be 1001 times larger, or 0), and it covers the actual error. */
+static void test_quad_2d_error_on_shifted_limits(void **state)
+{
+    (void)state;
+    mc_quad *q = mc_quad_create(1000);
+    assert_non_null(q);
+    double r0, e0, r1, e1;
+    /* integral_0^1 log y dy = -1 for every x: the inner rule's error
+     * estimate is not 0 (the singularity at y = 0). */
+    mc_quad_2d(q, (mc_fn2){f_log_y, NULL}, 0.0, 1.0, 0.0, 1.0, &r0, &e0);
+    mc_quad_2d(q, (mc_fn2){f_log_y, NULL}, 1000.0, 1001.0, 0.0, 1.0, &r1, &e1);
+    assert_near(r0, -1.0, 1e-12);
+    assert_near(r1, -1.0, 1e-12);
+    assert_true(e0 > 0.0);
+    if (!(e1 <= 2.0 * e0 && e1 >= 0.5 * e0))
+        fail_msg("error estimate %.3g on [1000, 1001] against %.3g on [0, 1]", e1, e0);
+    assert_true(fabs(r1 + 1.0) <= e1 + 1e-15);
+    /* Width 2.385 from x0 = 7: the inner part scales by the width. */
+    double r2, e2;
+    mc_quad_2d(q, (mc_fn2){f_log_y, NULL}, 7.0, 9.385, 0.0, 1.0, &r2, &e2);
+    assert_near(r2, -2.385, 1e-11);
+    if (!(e2 <= 2.0 * 2.385 * e0 && e2 >= 0.5 * 2.385 * e0))
+        fail_msg("error estimate %.3g on [7, 9.385] against %.3g on [0, 1]", e2, e0);
+    mc_quad_destroy(q);
+}
+
 static void test_strat_grid_shapes(void **state)
 {
     (void)state;
@@ -192,6 +223,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_quad_1d_known_integrals),
         cmocka_unit_test(test_quad_2d_known_integrals),
+        cmocka_unit_test(test_quad_2d_error_on_shifted_limits),
         cmocka_unit_test(test_strat_grid_shapes),
         cmocka_unit_test(test_strat_one_point_per_cell),
         cmocka_unit_test(test_strat_1d_large_n_half_open),

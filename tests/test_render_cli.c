@@ -1,7 +1,10 @@
 /* tests/test_render_cli.c - the cornell_box program: bad input exits 2
  * with one line on stderr naming the program, good input writes the image
- * in the format of its extension, Ctrl-C writes what was rendered and
- * exits 130. Runs the program built in $MC_BUILD/bin. */
+ * in the format of its extension, Ctrl-C, SIGTERM and SIGHUP write what was
+ * rendered and exit 128 + the signal, and whatever stops the program (a
+ * signal, a write error, a refused size) leaves at the output path either
+ * the previous file or a complete new image, and no temporary file. Runs
+ * the program built in $MC_BUILD/bin. */
 #define _POSIX_C_SOURCE 200809L
 
 #include "tests/support/mc_test.h"
@@ -9,7 +12,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 /* Runs cornell_box with `args` (shell syntax); returns its exit status and
  * fills out/err with (the start of) its stdout and stderr. */
@@ -32,6 +39,52 @@ static int run(const char *args, char *out, size_t out_len, char *err, size_t er
         fclose(f);
     }
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+/* Reads the file at path into buf (at most size - 1 bytes, NUL-terminated);
+ * returns the byte count, or -1 when it cannot be opened. */
+static long slurp(const char *path, char *buf, size_t size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return -1;
+    size_t n = fread(buf, 1, size - 1, f);
+    buf[n] = '\0';
+    fclose(f);
+    return (long)n;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fputs(text, f);
+    assert_int_equal(fclose(f), 0);
+}
+
+/* Whether dir holds a leftover temporary file of the output `base`
+ * (named ".base.XXXXXX"). */
+static bool has_temp_file(const char *dir, const char *base)
+{
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    char prefix[256];
+    snprintf(prefix, sizeof prefix, ".%s.", base);
+    bool found = false;
+    for (struct dirent *e; (e = readdir(d));)
+        found |= strncmp(e->d_name, prefix, strlen(prefix)) == 0;
+    closedir(d);
+    return found;
+}
+
+/* A PNG file is complete when it starts with the signature and ends with
+ * the IEND chunk (length 0, type, CRC). */
+static bool png_complete(const char *path)
+{
+    static char buf[1 << 20];
+    long n = slurp(path, buf, sizeof buf);
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    return n > 20 && memcmp(buf, "\x89PNG\r\n\x1a\n", 8) == 0 && memcmp(buf + n - 12, iend, 12) == 0;
 }
 
 static int count_lines(const char *s)
@@ -83,6 +136,11 @@ static void test_cli_writes_images(void **state)
     }
     assert_int_equal(run("--help", out, sizeof out, err, sizeof err), 0);
     assert_non_null(strstr(out, "--strategy"));
+    /* One sample per pixel: no pixel variance, so no standard error. */
+    snprintf(args, sizeof args, "--width 8 --spp 1 -o %s/cli_ok.png", b);
+    assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+    if (!strstr(out, "n/a") || strstr(out, "0.000e+00"))
+        fail_msg("--spp 1: the standard error is not n/a: '%s'", out);
 }
 
 /* SIGINT after a second of a long render: exit 130, a complete PNG, and
@@ -130,12 +188,136 @@ static void test_cli_sigint_writes_partial_image(void **state)
     (void)out;
 }
 
+/* SIGTERM (what timeout(1) and batch schedulers send) and SIGHUP stop a
+ * long render like Ctrl-C: exit 128 + signal, the partial image with its
+ * sample count, and the old file at the path replaced by a complete PNG,
+ * never truncated, with no temporary file left. Retried with a longer
+ * delay when the signal arrives before main() installs its handler. */
+static void test_cli_sigterm_sighup_replace_file_whole(void **state)
+{
+    (void)state;
+    char err[4096], full[8192], path[1024], errpath[1024];
+    const char *b = mc_test_build_dir();
+    static const int sigs[2] = {SIGTERM, SIGHUP};
+    static const char *const names[2] = {"TERM", "HUP"}, *const words[2] = {"terminated", "hung up"};
+    snprintf(path, sizeof path, "%s/cli_term.png", b);
+    snprintf(errpath, sizeof errpath, "%s/cli.err", b);
+    for (int k = 0; k < 2; k++) {
+        int rc = -1;
+        for (int delay = 1; delay <= 4; delay *= 2) {
+            write_text(path, "the previous image\n");
+            snprintf(full, sizeof full,
+                     "timeout --preserve-status -s %s %d %s/bin/cornell_box --scene book --width 64 "
+                     "--spp 1e6 -o %s >/dev/null 2>%s",
+                     names[k], delay, b, path, errpath);
+            rc = system(full);
+            assert_true(WIFEXITED(rc));
+            slurp(errpath, err, sizeof err);
+            if (err[0])
+                break;
+            printf("SIG%s after %d s arrived before the program started; retrying\n", names[k], delay);
+        }
+        if (WEXITSTATUS(rc) != 128 + sigs[k] || !strstr(err, words[k]) || !strstr(err, "samples"))
+            fail_msg("SIG%s: exit %d, stderr '%s'", names[k], WEXITSTATUS(rc), err);
+        if (!png_complete(path))
+            fail_msg("SIG%s: %s is not a complete PNG", names[k], path);
+        assert_false(has_temp_file(b, "cli_term.png"));
+    }
+    remove(path);
+}
+
+/* A write error while the image is written (here the file-size limit,
+ * with SIGXFSZ ignored so that write(2) fails with EFBIG) leaves the old
+ * file as it was and no temporary file; exit 1 with one line. */
+static void test_cli_write_error_keeps_old_file(void **state)
+{
+    (void)state;
+    char out[4096], err[4096], args[2048], path[1024], buf[256];
+    const char *b = mc_test_build_dir();
+    snprintf(path, sizeof path, "%s/cli_full.pfm", b);
+    write_text(path, "the previous image\n");
+    /* 64x64 PFM: 49 kB against a limit of 8 blocks of 512 bytes. */
+    snprintf(args, sizeof args, "--width 64 --spp 2 -o %s", path);
+    char full[8192];
+    snprintf(full, sizeof full,
+             "sh -c \"trap '' XFSZ; ulimit -f 8; exec %s/bin/cornell_box %s\" >%s/cli.out 2>%s/cli.err", b,
+             args, b, b);
+    int rc = system(full);
+    snprintf(full, sizeof full, "%s/cli.err", b);
+    slurp(full, err, sizeof err);
+    (void)out;
+    if (!WIFEXITED(rc) || WEXITSTATUS(rc) != 1 || count_lines(err) != 1 || strncmp(err, "cornell_box: ", 13))
+        fail_msg("write error: exit %d, stderr '%s'", WEXITSTATUS(rc), err);
+    assert_int_equal(slurp(path, buf, sizeof buf), (long)strlen("the previous image\n"));
+    assert_string_equal(buf, "the previous image\n");
+    assert_false(has_temp_file(b, "cli_full.pfm"));
+    remove(path);
+}
+
+/* Refusals before any rendering, each exit 2 with one line and the old
+ * file untouched: a directory that cannot be written (when not root,
+ * for whom permissions do not apply), a path that is a directory, and an
+ * image larger than the memory the process may use (an address-space
+ * limit of 1 GB against the 5.6 GB a 8192x8192 image needs; without a
+ * limit, 65536x65536 needs 357 GB). The line gives the size needed. */
+static void test_cli_refusals_keep_old_file(void **state)
+{
+    (void)state;
+    char out[4096], err[4096], args[2048], dir[1024], path[1100], dpath[1100], buf[256];
+    const char *b = mc_test_build_dir();
+    snprintf(dir, sizeof dir, "%s/cli_ro", b);
+    mkdir(dir, 0755);
+    snprintf(path, sizeof path, "%s/old.png", dir);
+    write_text(path, "the previous image\n");
+    if (geteuid() != 0) {
+        assert_int_equal(chmod(dir, 0555), 0);
+        snprintf(args, sizeof args, "--width 8 --spp 1 -o %s", path);
+        int rc = run(args, out, sizeof out, err, sizeof err);
+        chmod(dir, 0755);
+        if (rc != 2 || count_lines(err) != 1 || out[0])
+            fail_msg("unwritable directory: exit %d, stderr '%s'", rc, err);
+    } else {
+        printf("running as root: the unwritable-directory case is skipped\n");
+    }
+    snprintf(args, sizeof args, "--width 8 --spp 1 -o %s/d.png", dir);
+    snprintf(dpath, sizeof dpath, "%s/d.png", dir);
+    mkdir(dpath, 0755);
+    int rc = run(args, out, sizeof out, err, sizeof err);
+    rmdir(dpath);
+    if (rc != 2 || count_lines(err) != 1 || out[0])
+        fail_msg("output path is a directory: exit %d, stderr '%s'", rc, err);
+    snprintf(args, sizeof args, "--width 65536 -o %s", path);
+    rc = run(args, out, sizeof out, err, sizeof err);
+    if (rc != 2 || count_lines(err) != 1 || !strstr(err, "GB") || out[0])
+        fail_msg("--width 65536: exit %d, stderr '%s'", rc, err);
+    char full[8192];
+    snprintf(full, sizeof full, "sh -c 'ulimit -v 1000000; exec %s/bin/cornell_box --width 8192 -o %s' "
+             ">%s/cli.out 2>%s/cli.err", b, path, b, b);
+    rc = system(full);
+    snprintf(full, sizeof full, "%s/cli.err", b);
+    slurp(full, err, sizeof err);
+    /* AddressSanitizer reserves terabytes of address space for its shadow
+     * memory and cannot start under such a limit. */
+    if (strstr(err, "Sanitizer") || strstr(err, "ReserveShadowMemoryRange"))
+        printf("sanitizer build: the address-space limit case is skipped\n");
+    else if (!WIFEXITED(rc) || WEXITSTATUS(rc) != 2 || count_lines(err) != 1 || !strstr(err, "GB"))
+        fail_msg("--width 8192 under a 1 GB limit: exit %d, stderr '%s'", WEXITSTATUS(rc), err);
+    assert_int_equal(slurp(path, buf, sizeof buf), (long)strlen("the previous image\n"));
+    assert_string_equal(buf, "the previous image\n");
+    assert_false(has_temp_file(dir, "old.png"));
+    remove(path);
+    rmdir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cli_bad_input),
         cmocka_unit_test(test_cli_writes_images),
         cmocka_unit_test(test_cli_sigint_writes_partial_image),
+        cmocka_unit_test(test_cli_sigterm_sighup_replace_file_whole),
+        cmocka_unit_test(test_cli_write_error_keeps_old_file),
+        cmocka_unit_test(test_cli_refusals_keep_old_file),
     };
     return cmocka_run_group_tests_name("test_render_cli", tests, NULL, NULL);
 }

@@ -24,11 +24,21 @@
  * double-precision sample index exact. */
 #define APP_MAX_SAMPLES 10000000000000ULL
 
+/* The one grammar of every count, seed and whole-number option, printed
+ * by --help: digits (1000), hex after 0x (0x3e8), or a decimal number with
+ * a fraction or an exponent that is a whole number (1e3, 2.5e3; at most
+ * 2^53, past which a double no longer names one integer). No sign (a
+ * minus only where the option takes negative values), no spaces, no
+ * "inf" or "nan". */
+#define APP_NUMBER_GRAMMAR                                                                    \
+    "N, S, T and whole-number values: digits (1000), hex (0x3e8), or with an exponent or a\n" \
+    "fraction that makes a whole number (1e3, 2.5e3; at most 2^53); no sign, no spaces."
+
 typedef enum app_opt_kind {
     APP_FLAG,   /* bool *: set when present, takes no value */
-    APP_COUNT,  /* uint64_t *: 1 .. APP_MAX_SAMPLES, accepts 1e6 style */
-    APP_SEED,   /* uint64_t *: any unsigned 64-bit integer, decimal or 0x hex */
-    APP_INT,    /* int *: within [min, max] */
+    APP_COUNT,  /* uint64_t *: 1 .. APP_MAX_SAMPLES, APP_NUMBER_GRAMMAR */
+    APP_SEED,   /* uint64_t *: 0 .. 2^64 - 1, APP_NUMBER_GRAMMAR */
+    APP_INT,    /* int *: within [min, max], APP_NUMBER_GRAMMAR after an optional '-' */
     APP_DOUBLE, /* double *: finite, within [min, max] */
     APP_CHOICE, /* const char **: one of the NULL-terminated `choices` */
     APP_STRING  /* const char **: any non-empty string */
@@ -60,16 +70,34 @@ bool app_selected(const char *choice, const char *name);
 int app_parse(const char *prog, const char *usage, int argc, char **argv, const app_opt *opts,
               size_t n, const char **positional, int max_positional);
 
-/* Parses a sample count like "1000", "1e6", "2.5e3" (an exact integer
- * within 1 .. max). Returns false for anything else. */
+/* Parses a whole number in APP_NUMBER_GRAMMAR within [min, max]. Returns
+ * false for anything else. */
+bool app_parse_uint(const char *s, uint64_t min, uint64_t max, uint64_t *out);
+
+/* A sample count: app_parse_uint within 1 .. max. */
 bool app_parse_count(const char *s, uint64_t max, uint64_t *out);
 
-/* Parses an unsigned 64-bit seed: decimal, or hex after 0x (never octal;
- * no sign or leading space). */
+/* A seed: app_parse_uint within 0 .. 2^64 - 1. */
 bool app_parse_seed(const char *s, uint64_t *out);
+
+/* The most OpenMP threads a --threads option accepts: 64 per processor,
+ * or the OpenMP thread limit when lower. */
+int app_max_threads(void);
 
 /* Parses a finite double with nothing after it. */
 bool app_parse_double(const char *s, double *out);
+
+/* Runs estimated to take longer than this many seconds announce it. */
+#define APP_ANNOUNCE_SECONDS 5.0
+
+/* Says on stderr, before a run estimated to take `seconds` (more than
+ * APP_ANNOUNCE_SECONDS), how long it will take and what it is:
+ * "prog: about 2.3 h for what". `threads` is the --threads value (0: all)
+ * that the estimate assumed. Silent for shorter runs. */
+void app_announce(const char *prog, double seconds, const char *what);
+
+/* The number of threads a --threads value of `threads` runs (0: all). */
+int app_threads_used(int threads);
 
 /* Prints "prog: message" to stderr and exits with status 2. */
 _Noreturn void app_fail(const char *prog, const char *fmt, ...)
@@ -85,14 +113,28 @@ typedef struct app_table {
     bool csv;
     const char *const *extra_cols;
     size_t n_extra;
+    const char *prog; /* may be NULL; with csv, names the program in the
+                       * stderr note of a row whose stderr is n/a */
 } app_table;
 
 /* Prints the header (CSV header line, or the table's title row). */
 void app_table_begin(const app_table *t);
 
+/* Why the standard error (and so z) of e cannot be estimated, or NULL
+ * when it can: fewer than 2 samples; a std_error of NaN (the estimator's
+ * way of saying so, e.g. an image with pixels of one sample); or a sample
+ * variance of 0 with an estimate that is not the exact value, which only
+ * too few samples produce (a zero-variance estimator hits the exact value
+ * up to rounding). */
+const char *app_no_stderr_reason(mc_estimate e, double exact);
+
 /* Prints one row: method, e.n, e.value, e.std_error, exact (NaN: unknown,
  * printed empty), z = (value - exact) / std_error (empty when exact is
- * unknown or std_error is 0), then extra[0..n_extra). */
+ * unknown or std_error is 0), then extra[0..n_extra). A standard error
+ * that cannot be estimated (app_no_stderr_reason) is printed as "n/a",
+ * z too, and the reason after the row; in CSV both fields are empty and
+ * the reason goes to stderr as "prog: method: stderr and z n/a: why"
+ * when t->prog is set. */
 void app_table_row(const app_table *t, const char *method, mc_estimate e, double exact,
                    const double *extra);
 
