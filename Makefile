@@ -161,13 +161,13 @@ _soak: all $(TESTS)
 	@MC_BUILD=$(B) bash tools/soak.sh $(SEEDS) $(TESTS)
 
 _plots: all
-	@if [ -f plots/Makefile.inc ]; then $(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) figures; \
+	@if [ -f plots/Makefile.inc ]; then $(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) V=$(V) figures; \
 	 else echo "make plots: not yet"; fi
 _plots-check: all
-	@if [ -f plots/Makefile.inc ]; then $(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) check; \
+	@if [ -f plots/Makefile.inc ]; then $(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) V=$(V) check; \
 	 else echo "make plots-check: not yet"; fi
 _book: all $(TESTS)
-	@$(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) html
+	@$(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) V=$(V) html
 _book-check: _book
 	@$(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) check
 
