@@ -41,6 +41,7 @@ int main(int argc, char **argv)
     app_parse("cos_cubed",
               "cos_cubed [--method uniform|cosine|all] [--samples N] [--seed S] [--csv]", argc,
               argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("cos_cubed", n, 8.9e-08);
 
     /* BEGIN SNIPPET cos_cubed_methods */
     const pdf_warp warps[2] = {{smp_uniform_hemisphere_sample, smp_uniform_hemisphere_pdf},

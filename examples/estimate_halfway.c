@@ -45,6 +45,7 @@ int main(int argc, char **argv)
     };
     app_parse("estimate_halfway", "estimate_halfway [--samples N] [--seed S] [--csv]", argc, argv,
               opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("estimate_halfway", n, 6.6e-07);
     /* Every sample is kept for the sort: 16 bytes each. */
     if (n < 2 || n > (uint64_t)1 << 30)
         app_fail("estimate_halfway", "--samples must be from 2 to 2^30 (the samples are sorted in memory)");

@@ -57,6 +57,7 @@ int main(int argc, char **argv)
     };
     app_parse("integrate_x_sq", "integrate_x_sq [--pdf uniform|linear|quadratic|all] [--samples N]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("integrate_x_sq", n, 1.4e-07);
 
     app_table t = {stdout, csv, extra_cols, 1, "integrate_x_sq"};
     app_table_begin(&t);

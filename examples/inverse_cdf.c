@@ -93,6 +93,7 @@ int main(int argc, char **argv)
     };
     app_parse("inverse_cdf", "inverse_cdf [--samples N] [--seed S] [--csv]", argc, argv, opts,
               sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("inverse_cdf", n, 1.2e-07);
 
     double cdf_storage[EVENTS];
     smp_alias_cell alias_storage[EVENTS];

@@ -60,6 +60,7 @@ int main(int argc, char **argv)
     };
     app_parse("light_pdf", "light_pdf [--method light|cosine|all] [--samples N] [--seed S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("light_pdf", n, 2.2e-07);
 
     /* BEGIN SNIPPET light_pdf_main */
     light l = {vec3_make(-0.3, 0.2, 1.0), vec3_make(0.8, 0.0, 0.2), vec3_make(0.0, 0.6, 0.1),

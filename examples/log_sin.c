@@ -48,6 +48,7 @@ int main(int argc, char **argv)
     };
     app_parse("log_sin", "log_sin [--method plain|importance|all] [--samples N] [--seed S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("log_sin", n, 4.2e-07);
 
     const double exact = -MC_PI * MC_LN2;
     const mc_fn1 f = {log_sin, NULL};

@@ -67,6 +67,7 @@ int main(int argc, char **argv)
     };
     app_parse("mixture", "mixture [--method NAME] [--samples N] [--seed S] [--csv]", argc, argv,
               opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("mixture", n, 7.4e-07);
 
     vec3 origin = vec3_make(0.0, 0.0, 0.0), up = vec3_make(0.0, 0.0, 1.0);
     vec3 corner = vec3_make(-0.3, 0.2, 1.0), u = vec3_make(0.8, 0.0, 0.2),

@@ -46,6 +46,7 @@ int main(int argc, char **argv)
     app_parse("projected_area",
               "projected_area [--body box|sphere|all] [--samples N] [--seed S] [--csv]", argc, argv,
               opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("projected_area", n, 2.5e-07);
 
     const pdf_body box = {true, vec3_make(1.1925, 0.5, 0.25), 0.0};
     const pdf_body sphere = {false, vec3_make(0.0, 0.0, 0.0), 1.0};

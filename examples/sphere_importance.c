@@ -62,6 +62,7 @@ int main(int argc, char **argv)
               "sphere_importance [--method inverse|gaussian|rejection|all] [--samples N] [--seed "
               "S] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("sphere_importance", n, 2.1e-07);
 
     app_table t = {stdout, csv, extra_cols, 1, "sphere_importance"};
     app_table_begin(&t);

@@ -59,6 +59,7 @@ int main(int argc, char **argv)
               "sphere_light [--method area|cone|all] [--flux F] [--radius R] [--distance D] "
               "[--theta DEG] [--samples N] [--csv]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+    app_announce_samples("sphere_light", n, 1.3e-07);
     double theta = theta_deg * MC_PI / 180.0;
     /* The formula holds only for a sphere wholly above the horizon. */
     if (!(radius < dist) || theta + asin(radius / dist) >= MC_PI_2)

@@ -467,13 +467,27 @@ static void test_cli_long_runs_announce(void **state)
 {
     (void)state;
     const char *b = mc_test_build_dir();
-    static const char *const cmds[] = {
-        "timeout -s KILL 2 ./pi --samples 1e13 --threads 1",
-        "timeout -s TERM 2 ./cornell_box --spp 1e13 --width 8 --threads 1 -o ../cli_long.png",
+    /* Each is stopped soon after it starts: the line must come first. */
+    static const struct {
+        const char *cmd, *prog;
+    } cases[] = {
+        {"timeout -s KILL 2 ./pi --samples 1e13 --threads 1", "pi"},
+        {"timeout -s TERM 2 ./cornell_box --spp 1e13 --width 8 --threads 1 -o ../cli_long.png",
+         "cornell_box"},
+        {"timeout -s KILL 0.5 ./integrate_x_sq --samples 1e12", "integrate_x_sq"},
+        {"timeout -s KILL 0.5 ./estimate_halfway --samples 1e12", "estimate_halfway"},
+        {"timeout -s KILL 0.5 ./log_sin --samples 1e12", "log_sin"},
+        {"timeout -s KILL 0.5 ./inverse_cdf --samples 1e12", "inverse_cdf"},
+        {"timeout -s KILL 0.5 ./sphere_importance --samples 1e12", "sphere_importance"},
+        {"timeout -s KILL 0.5 ./cos_cubed --samples 1e12", "cos_cubed"},
+        {"timeout -s KILL 0.5 ./light_pdf --samples 1e12", "light_pdf"},
+        {"timeout -s KILL 0.5 ./sphere_light --samples 1e12", "sphere_light"},
+        {"timeout -s KILL 0.5 ./mixture --samples 1e12", "mixture"},
+        {"timeout -s KILL 0.5 ./projected_area --samples 1e12", "projected_area"},
     };
-    char full[2048], err[4096];
-    for (int i = 0; i < 2; i++) {
-        snprintf(full, sizeof full, "cd %s/bin && %s >/dev/null 2>../cli_long.err", b, cmds[i]);
+    char full[2048], err[4096], name[64];
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        snprintf(full, sizeof full, "cd %s/bin && %s >/dev/null 2>../cli_long.err", b, cases[i].cmd);
         (void)system(full);
         snprintf(full, sizeof full, "%s/cli_long.err", b);
         FILE *f = fopen(full, "rb");
@@ -481,9 +495,9 @@ static void test_cli_long_runs_announce(void **state)
         size_t n = fread(err, 1, sizeof err - 1, f);
         err[n] = '\0';
         fclose(f);
-        const char *name = i ? "cornell_box: about " : "pi: about ";
+        snprintf(name, sizeof name, "%s: about ", cases[i].prog);
         if (strncmp(err, name, strlen(name)) != 0 || !strstr(err, " for "))
-            fail_msg("'%s': no announcement of its time: '%s'", cmds[i], err);
+            fail_msg("'%s': no announcement of its time: '%s'", cases[i].cmd, err);
     }
     snprintf(full, sizeof full, "%s/cli_long.png", b);
     remove(full);

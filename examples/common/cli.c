@@ -116,6 +116,13 @@ void app_announce(const char *prog, double seconds, const char *what)
     fflush(stderr);
 }
 
+void app_announce_samples(const char *prog, uint64_t n, double seconds_per_sample)
+{
+    char what[96];
+    snprintf(what, sizeof what, "%.3g samples per method, one thread", (double)n);
+    app_announce(prog, (double)n * seconds_per_sample, what);
+}
+
 static void print_help(const char *usage, const app_opt *opts, size_t n)
 {
     printf("usage: %s\n\n", usage);

@@ -96,6 +96,12 @@ bool app_parse_double(const char *s, double *out);
  * that the estimate assumed. Silent for shorter runs. */
 void app_announce(const char *prog, double seconds, const char *what);
 
+/* app_announce for a chapter program that draws n samples per method,
+ * about seconds_per_sample for one sample of every method together (the
+ * programs measured theirs with --samples 1e6 on the project's machine:
+ * an estimate, so runs near the bound may or may not announce). */
+void app_announce_samples(const char *prog, uint64_t n, double seconds_per_sample);
+
 /* The number of threads a --threads value of `threads` runs (0: all). */
 int app_threads_used(int threads);
 
