@@ -490,11 +490,7 @@ static void test_cli_long_runs_announce(void **state)
         snprintf(full, sizeof full, "cd %s/bin && %s >/dev/null 2>../cli_long.err", b, cases[i].cmd);
         (void)system(full);
         snprintf(full, sizeof full, "%s/cli_long.err", b);
-        FILE *f = fopen(full, "rb");
-        assert_non_null(f);
-        size_t n = fread(err, 1, sizeof err - 1, f);
-        err[n] = '\0';
-        fclose(f);
+        mc_test_read_text(full, err, sizeof err);
         snprintf(name, sizeof name, "%s: about ", cases[i].prog);
         if (strncmp(err, name, strlen(name)) != 0 || !strstr(err, " for "))
             fail_msg("'%s': no announcement of its time: '%s'", cases[i].cmd, err);

@@ -167,11 +167,7 @@ static void test_cli_sigint_writes_partial_image(void **state)
         assert_true(WIFEXITED(rc));
         assert_int_equal(WEXITSTATUS(rc), 130);
         snprintf(full, sizeof full, "%s/cli.err", b);
-        FILE *f = fopen(full, "rb");
-        assert_non_null(f);
-        size_t n = fread(err, 1, sizeof err - 1, f);
-        err[n] = '\0';
-        fclose(f);
+        size_t n = mc_test_read_text(full, err, sizeof err);
         if (strstr(err, "interrupted") || n > 0)
             break;
         printf("SIGINT after %d s arrived before the program started; retrying\n", delay);

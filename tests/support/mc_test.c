@@ -78,6 +78,16 @@ void mc_assert_seeded_impl(bool cond, const char *scond, uint64_t seed, const ch
     _fail(file, line);
 }
 
+size_t mc_test_read_text(const char *path, char *buf, size_t size)
+{
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    size_t n = fread(buf, 1, size - 1, f);
+    buf[n] = '\0';
+    fclose(f);
+    return n;
+}
+
 const char *mc_test_build_dir(void)
 {
     const char *b = getenv("MC_BUILD");

@@ -43,6 +43,11 @@ void mc_assert_z_impl(const char *label, double estimate, double exact, double s
 #define assert_seeded(cond, seed) mc_assert_seeded_impl((cond), #cond, (seed), __FILE__, __LINE__)
 void mc_assert_seeded_impl(bool cond, const char *scond, uint64_t seed, const char *file, int line);
 
+/* Reads the file at path into buf (size bytes, at least 1) as a string,
+ * cut to size - 1 bytes; fails the test if the file cannot be opened.
+ * Returns the number of bytes read. */
+size_t mc_test_read_text(const char *path, char *buf, size_t size);
+
 /* The directory holding the build under test ($MC_BUILD, default "build"). */
 const char *mc_test_build_dir(void);
 
