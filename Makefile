@@ -85,7 +85,9 @@ TEST_LIBS := -lcmocka
 DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox pandoc libpng-dev \
                 fonts-texgyre-math
 
-LAYERS := render pdf samplers mc
+# Link order, highest layer first. The sampler catalog sits above pdf/
+# and below the programs; it does not use render/.
+LAYERS := catalog render pdf samplers mc
 lib_srcs = $(wildcard $(1)/*.c)
 lib_objs = $(patsubst %.c,$(B)/obj/%.o,$(call lib_srcs,$(1)))
 LIBFILES := $(foreach l,$(LAYERS),$(B)/lib/lib$(l).a)
