@@ -1,8 +1,8 @@
 # mcbox - the only entry point. `make help` lists the targets.
 #
-# The libraries of mc/, samplers/, pdf/ and render/ are separate static
-# archives, linked in layer order (render, pdf, samplers, mc), so a lower
-# layer that calls up into a higher one fails to link. mk/flags.mk chooses
+# The libraries of mc/, samplers/, pdf/, render/ and catalog/ are separate
+# static archives, linked in layer order (catalog, render, pdf, samplers,
+# mc), so a lower layer that calls up into a higher one fails to link. mk/flags.mk chooses
 # the compiler, the variant (its build directory) and the flags; mk/rules.mk
 # compiles and links; mk/pgo.mk builds the renderer profile-guided.
 
@@ -17,7 +17,9 @@ include mk/flags.mk
 DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox pandoc libpng-dev \
                 fonts-texgyre-math
 
-LAYERS := render pdf samplers mc
+# Link order, highest layer first. The sampler catalog sits above pdf/
+# and below the programs; it does not use render/.
+LAYERS := catalog render pdf samplers mc
 # A layer's archive holds its folder's sources and those of its fast/
 # subfolder, if it has one.
 lib_srcs = $(wildcard $(1)/*.c $(1)/fast/*.c)

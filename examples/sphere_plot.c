@@ -14,7 +14,7 @@
 #include <stdio.h>
 
 #include "examples/common/cli.h"
-#include "examples/common/warp_table.h"
+#include "catalog/catalog.h"
 
 static const char *const methods[] = {"inverse", "gaussian", "rejection", NULL};
 
@@ -34,20 +34,21 @@ int main(int argc, char **argv)
         app_fail("sphere_plot", "--samples: at most 1e8 points (a plot needs far fewer)");
 
     /* BEGIN SNIPPET sphere_plot_loop */
-    /* The three methods are warp's entries sphere-<method>: one sampler
-     * table for both programs, so the scatter plot shows what warp tests. */
+    /* The three methods are the catalog's rows sphere-<method>: one
+     * sampler table for this program, warp and the tests, so the scatter
+     * plot shows what they test. */
     char name[32], err[200];
     snprintf(name, sizeof name, "sphere-%s", method);
-    const warp_entry *e = warp_find(name);
-    static warp_state state;
-    warp_params params;
-    warp_defaults(e, &params);
-    if (!warp_prepare(e, &params, &state, err, sizeof err))
+    const cat_row *r = cat_find(name);
+    static cat_state state;
+    cat_values params;
+    cat_defaults(r, &params);
+    if (!cat_prepare(r, &params, &state, err, sizeof err))
         app_fail("sphere_plot", "%s", err);
     mc_rng rng = mc_rng_derive(seed, 0u);
     for (uint64_t i = 0; i < n; i++) {
         double d[3];
-        warp_sample(e, &state, &rng, d);
+        cat_sample(&state, &rng, d);
         printf("%.17g %.17g %.17g\n", d[0], d[1], d[2]);
     }
     /* END SNIPPET sphere_plot_loop */

@@ -10,7 +10,8 @@
  *
  * Points are written and read as in `sample`: directions `x y z`, planar
  * points `x y`, reals `x`, discrete outcomes the index; numbers in %.17g.
- * chi2 histograms N samples (default 1e6) in the entry's chart, integrates
+ * The samplers are the rows of the catalog (catalog/catalog.h).
+ * chi2 histograms N samples (default 1e6) in the row's chart, integrates
  * the density over every cell (mc/gof.h) and runs Pearson's test at level
  * alpha (default 0.01); the verdict is `pass` or `fail`, and the exit
  * status 0 or 1 accordingly. Any bad input: one line on stderr, exit 2.
@@ -27,7 +28,7 @@
 #include <string.h>
 
 #include "examples/common/cli.h"
-#include "examples/common/warp_table.h"
+#include "catalog/catalog.h"
 #include "mc/gof.h"
 
 #define PROG "warp"
@@ -134,21 +135,22 @@ static args parse(int argc, char **argv)
 
 static void list(void)
 {
-    for (size_t i = 0; i < warp_count(); i++) {
-        const warp_entry *e = warp_at(i);
-        printf("%-17s %-24s %-12s %s\n", warp_name(e), warp_domain(e), warp_measure(e),
-               warp_param_defaults(e));
+    for (size_t i = 0; i < cat_count(); i++) {
+        const cat_row *r = cat_at(i);
+        char defaults[256];
+        cat_param_defaults(r, defaults, sizeof defaults);
+        printf("%-17s %-24s %-12s %s\n", r->name, r->domain, r->measure, defaults);
     }
 }
 
-static void sample(const warp_entry *e, const warp_state *s, const args *a)
+static void sample(const cat_state *s, const args *a)
 {
     mc_rng rng = mc_rng_derive(a->seed, 0u);
-    int dims = warp_point_dims(e);
+    int dims = cat_point_dims(s->row);
     for (uint64_t k = 0; k < a->n; k++) {
         double x[3];
-        warp_sample(e, s, &rng, x);
-        if (warp_point_kind(e) == WARP_INDEX)
+        cat_sample(s, &rng, x);
+        if (s->row->point == CAT_INDEX)
             printf("%.0f\n", x[0]);
         else
             for (int j = 0; j < dims; j++)
@@ -158,9 +160,9 @@ static void sample(const warp_entry *e, const warp_state *s, const args *a)
 
 /* Densities are collected first and printed only when every input line
  * has parsed, so that bad input leaves stdout empty. */
-static void densities(const warp_entry *e, const warp_state *s)
+static void densities(const cat_state *s)
 {
-    int dims = warp_point_dims(e);
+    int dims = cat_point_dims(s->row);
     size_t n = 0, cap = 1024;
     double *out = malloc(cap * sizeof *out);
     char line[4096];
@@ -180,7 +182,7 @@ static void densities(const warp_entry *e, const warp_state *s)
                      dims > 1 ? "s" : "");
         /* An outcome is an index: 2.5 or -1 is a mistake in the input, not
          * an outcome of probability 0. */
-        if (warp_point_kind(e) == WARP_INDEX &&
+        if (s->row->point == CAT_INDEX &&
             (x[0] != floor(x[0]) || x[0] < 0.0 || x[0] >= (double)s->p.n_weights))
             app_fail(PROG, "stdin line %ld: '%g' is not an outcome index from 0 to %zu", lineno, x[0],
                      s->p.n_weights - 1);
@@ -193,7 +195,7 @@ static void densities(const warp_entry *e, const warp_state *s)
         if (n == cap)
             out = realloc(out, (cap *= 2) * sizeof *out);
         if (out)
-            out[n++] = warp_density(e, s, x);
+            out[n++] = cat_pdf(s, x);
     }
     if (!out)
         app_fail(PROG, "out of memory");
@@ -203,11 +205,10 @@ static void densities(const warp_entry *e, const warp_state *s)
 }
 
 /* BEGIN SNIPPET warp_chi2 */
-static int chi2(const warp_entry *e, const warp_state *s, const args *a)
+static int chi2(const cat_state *s, const args *a)
 {
-    warp_gof_ctx ctx = {e, s};
     uint64_t n = a->have_n ? a->n : 1000000u;
-    mc_gof_spec spec = warp_gof_spec(&ctx, n);
+    mc_gof_spec spec = cat_gof_spec_for(s, n);
     int cells = mc_gof_cell_count(&spec);
     double *obs = malloc((size_t)cells * sizeof *obs),
            *expct = malloc((size_t)cells * sizeof *expct);
@@ -242,23 +243,23 @@ int main(int argc, char **argv)
         app_fail(PROG, "unknown command '%s' (list, sample, pdf or chi2)", a.command);
     if (!a.name)
         app_fail(PROG, "%s needs a sampler name (see warp list)", a.command);
-    const warp_entry *e = warp_find(a.name);
-    if (!e)
+    const cat_row *r = cat_find(a.name);
+    if (!r)
         app_fail(PROG, "unknown sampler '%s' (see warp list)", a.name);
-    warp_params p;
-    warp_defaults(e, &p);
+    cat_values p;
+    cat_defaults(r, &p);
     char err[256];
     for (int i = 0; i < a.n_params; i++)
-        if (!warp_set_param(e, &p, a.params[i], err, sizeof err))
+        if (!cat_set_param(r, &p, a.params[i], err, sizeof err))
             app_fail(PROG, "%s", err);
-    static warp_state s; /* large (the tables' storage) and self-referencing */
-    if (!warp_prepare(e, &p, &s, err, sizeof err))
+    static cat_state s; /* large (the tables' storage) and self-referencing */
+    if (!cat_prepare(r, &p, &s, err, sizeof err))
         app_fail(PROG, "%s", err);
     if (strcmp(a.command, "sample") == 0)
-        sample(e, &s, &a);
+        sample(&s, &a);
     else if (strcmp(a.command, "pdf") == 0)
-        densities(e, &s);
+        densities(&s);
     else
-        return chi2(e, &s, &a);
+        return chi2(&s, &a);
     return 0;
 }

@@ -24,92 +24,17 @@
 
 enum { N_CHI2 = 1000000 };
 
-/* Wrappers from the samplers' signatures to warp_case's. */
-WARP_TRIO(sphere, uniform_sphere)
-WARP_TRIO(hemi, uniform_hemisphere)
-WARP_TRIO(cos, cosine_hemisphere)
-WARP_TRIO(tp, theta_phi)
-WARP_WRAP_SAMPLE(s_flip, smp_hemisphere_flip_sample(u1, u2))
-WARP_WRAP_SAMPLE(s_cos_malley, smp_cosine_hemisphere_sample_malley(u1, u2))
-WARP_WRAP_SAMPLE(s_cos_acos, smp_cosine_hemisphere_sample_acos(u1, u2))
-WARP_WRAP_INV(i_cos_malley, smp_cosine_hemisphere_invert_malley(w))
-WARP_WRAP_INV(i_cos_acos, smp_cosine_hemisphere_invert_acos(w))
+/* The rows of the catalog this program tests (chi-square, normalization,
+ * domain and round trip of every case: tests built in main). */
+static const char *const families[] = {"sphere", "hemisphere"};
 
-static vec3 s_sphere_gauss(mc_rng *rng, const warp_case *c)
+/* A catalog case by name, prepared into *s (which must outlive it). */
+static warp_case case_named(const char *name, cat_state *s)
 {
-    (void)c;
-    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-    double u3 = mc_rng_uniform(rng), u4 = mc_rng_uniform(rng);
-    return smp_uniform_sphere_sample_gaussian(u1, u2, u3, u4);
-}
-
-static vec3 s_sphere_reject(mc_rng *rng, const warp_case *c)
-{
-    (void)c;
-    return smp_uniform_sphere_sample_rejection(rng);
-}
-
-#define DIR_CASE(nm, s, p, inv, zlo)                                                               \
-    {                                                                                              \
-        .name = nm, .sample = s, .pdf = p, .invert = inv, .direction = true, .kind = WARP_COS_PHI, \
-        .z_lo = zlo                                                                                \
-    }
-
-static const warp_case sphere_cases[] = {
-    DIR_CASE("sphere-inverse", s_sphere, p_sphere, i_sphere, -1.0),
-    {.name = "sphere-gaussian",
-     .sample_rng = s_sphere_gauss,
-     .pdf = p_sphere,
-     .direction = true,
-     .kind = WARP_COS_PHI,
-     .z_lo = -1.0},
-    {.name = "sphere-rejection",
-     .sample_rng = s_sphere_reject,
-     .pdf = p_sphere,
-     .direction = true,
-     .kind = WARP_COS_PHI,
-     .z_lo = -1.0},
-};
-
-static const warp_case hemi_cases[] = {
-    DIR_CASE("hemisphere", s_hemi, p_hemi, i_hemi, 0.0),
-    DIR_CASE("hemisphere-flip", s_flip, p_hemi, NULL, 0.0),
-    DIR_CASE("theta-phi", s_tp, p_tp, i_tp, 0.0),
-};
-
-#define COS_CASE(nm, s, inv)                                                                       \
-    {                                                                                              \
-        .name = nm, .sample = s, .pdf = p_cos, .invert = inv, .direction = true,                   \
-        .rim_zero_ok = true, .kind = WARP_COS_PHI, .z_lo = 0.0                                     \
-    }
-
-static const warp_case cos_cases[] = {
-    COS_CASE("cosine", s_cos, i_cos),
-    COS_CASE("cosine-malley", s_cos_malley, i_cos_malley),
-    COS_CASE("cosine-acos", s_cos_acos, i_cos_acos),
-};
-
-#define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
-
-/* Seed 4001; per case as in warp_run_cases. */
-static void test_sphere_all_checks(void **state)
-{
-    (void)state;
-    warp_run_cases(sphere_cases, COUNT(sphere_cases), N_CHI2, mc_test_seed(4001u));
-}
-
-/* Seed 4002. */
-static void test_hemisphere_all_checks(void **state)
-{
-    (void)state;
-    warp_run_cases(hemi_cases, COUNT(hemi_cases), N_CHI2, mc_test_seed(4002u));
-}
-
-/* Seed 4003. */
-static void test_cosine_all_checks(void **state)
-{
-    (void)state;
-    warp_run_cases(cos_cases, COUNT(cos_cases), N_CHI2, mc_test_seed(4003u));
+    const cat_row *r = NULL;
+    const cat_case *tc = cat_find_case(name, &r);
+    assert_non_null(tc);
+    return warp_case_of(r, tc, s);
 }
 
 /* Agreement: 10^6 samples of each method in 20 x 40 cells of
@@ -120,10 +45,17 @@ static void test_agreement_sphere_and_cosine(void **state)
 {
     (void)state;
     uint64_t seed = mc_test_seed(4004u);
-    const warp_case *pairs[4][2] = {{&sphere_cases[0], &sphere_cases[1]},
-                                    {&sphere_cases[0], &sphere_cases[2]},
-                                    {&cos_cases[0], &cos_cases[1]},
-                                    {&cos_cases[0], &cos_cases[2]}};
+    static const char *const names[5] = {"sphere-inverse", "sphere-gaussian", "sphere-rejection",
+                                         "cosine", "cosine-malley"};
+    static cat_state states[6];
+    warp_case cases[6];
+    for (int k = 0; k < 5; k++)
+        cases[k] = case_named(names[k], &states[k]);
+    cases[5] = case_named("cosine-acos", &states[5]);
+    const warp_case *pairs[4][2] = {{&cases[0], &cases[1]},
+                                    {&cases[0], &cases[2]},
+                                    {&cases[3], &cases[4]},
+                                    {&cases[3], &cases[5]}};
     warp_agreement r[4];
 #pragma omp parallel for
     for (int k = 0; k < 4; k++)
@@ -156,16 +88,45 @@ static void test_cosine_book_equals_acos(void **state)
 
 /* --- negative controls -------------------------------------------------- */
 
-WARP_WRAP_PDF(p_cos_no_inv_pi, w.z > 0.0 ? w.z : 0.0)
-WARP_WRAP_PDF(p_cos_twice, 2.0 * smp_cosine_hemisphere_pdf(w))
-WARP_WRAP_PDF(p_cos_1pct, 1.01 * smp_cosine_hemisphere_pdf(w))
+/* Each control is a catalog row with one function replaced. */
+static double p_cos_no_inv_pi(const cat_state *s, const double x[3])
+{
+    (void)s;
+    return x[2] > 0.0 ? x[2] : 0.0;
+}
+
+static double p_cos_twice(const cat_state *s, const double x[3])
+{
+    return 2.0 * cat_find("cosine")->pdf(s, x);
+}
+
+static double p_cos_1pct(const cat_state *s, const double x[3])
+{
+    return 1.01 * cat_find("cosine")->pdf(s, x);
+}
 
 /* theta uniform in [0, pi/2]: the Riemann mapping mistaken for a uniform
  * hemisphere (the sin theta of the solid angle forgotten). */
-WARP_WRAP_SAMPLE(s_theta_linear, smp_theta_phi_sample(u1, u2))
+static void s_theta_linear(const cat_state *s, const double *u, double x[3])
+{
+    cat_find("theta-phi")->sample_u(s, u, x);
+}
 
 /* The unflipped sphere sample given the hemisphere's pdf. */
-WARP_WRAP_SAMPLE(s_sphere_unflipped, smp_uniform_sphere_sample(u1, u2))
+static void s_sphere_unflipped(const cat_state *s, const double *u, double x[3])
+{
+    cat_find("sphere-inverse")->sample_u(s, u, x);
+}
+
+/* The row `name` with its defaults and one function replaced, prepared
+ * into *s; the case is called `label`. */
+static warp_case control(const char *label, cat_row *bad, cat_state *s)
+{
+    static const cat_case defaults = {"defaults", NULL, {0, 0}, 0.0, 0, 0};
+    warp_case c = warp_case_of(bad, &defaults, s);
+    c.name = label;
+    return c;
+}
 
 /* Each control goes through the check that should catch it, and the
  * correct pdf's normalization shows it is a property of the bug and not of
@@ -174,49 +135,60 @@ static void test_negative_controls(void **state)
 {
     negctl *t = *state;
     uint64_t seed = mc_test_seed(4005u);
-    warp_case c = COS_CASE("negctl-cosine-no-inv-pi", s_cos, NULL);
-    c.pdf = p_cos_no_inv_pi;
+    static cat_state st;
+    cat_row cos_row = *cat_find("cosine");
+    cos_row.invert = NULL;
+    cos_row.pdf = p_cos_no_inv_pi;
+    warp_case c = control("negctl-cosine-no-inv-pi", &cos_row, &st);
     assert_true(negctl_record(t, "cosine pdf without 1/pi", "normalization", warp_norm_rejects(&c)));
-    c.pdf = p_cos_twice;
+    cos_row.pdf = p_cos_twice;
     c.name = "negctl-cosine-twice";
     assert_true(negctl_record(t, "cosine pdf times 2 (early erratum)", "normalization",
                               warp_norm_rejects(&c)));
     /* A 1% scale error: normalization catches it for sure; for chi-square
      * with 10^6 samples in 5000 cells it adds about 10^-4 n = 100 to the
      * statistic, one standard deviation (sqrt(2 dof) = 100): usually missed. */
-    c.pdf = p_cos_1pct;
+    cos_row.pdf = p_cos_1pct;
     c.name = "negctl-cosine-1pct";
     assert_true(negctl_record(t, "cosine pdf 1% too large", "normalization", warp_norm_rejects(&c)));
     printf("  (the same 1%% error under chi-square alone: %s)\n",
            warp_chi2_rejects(&c, N_CHI2, seed) ? "rejected" : "not rejected");
 
-    warp_case h = DIR_CASE("negctl-theta-linear-as-uniform", s_theta_linear, p_hemi, NULL, 0.0);
+    static cat_state sh;
+    cat_row lin = *cat_find("hemisphere");
+    lin.invert = NULL;
+    lin.sample_u = s_theta_linear;
+    warp_case h = control("negctl-theta-linear-as-uniform", &lin, &sh);
     assert_true(fabs(warp_norm_error(&h)) <= WARP_NORM_TOL); /* the pdf itself is normalized */
     assert_true(negctl_record(t, "theta = (pi/2) u given the uniform hemisphere pdf", "chi-square",
                               warp_chi2_rejects(&h, N_CHI2, seed)));
 
-    warp_case f = DIR_CASE("negctl-hemisphere-not-flipped", s_sphere_unflipped, p_hemi, NULL, 0.0);
+    static cat_state sf;
+    cat_row unflipped = *cat_find("hemisphere");
+    unflipped.invert = NULL;
+    unflipped.sample_u = s_sphere_unflipped;
+    warp_case f = control("negctl-hemisphere-not-flipped", &unflipped, &sf);
     warp_domain d = warp_check_domain(&f, 100000u, seed);
     assert_true(negctl_record(t, "hemisphere sample not flipped", "domain",
                               !warp_domain_ok(&d) && d.outside > 0 && d.zero_pdf > 0));
 
     /* The agreement test must see a different law: the cosine methods
      * against the uniform hemisphere. */
-    warp_agreement a = warp_compare(&cos_cases[0], &hemi_cases[0], N_CHI2, seed);
+    static cat_state sc, su;
+    warp_case cosine = case_named("cosine", &sc), uniform = case_named("hemisphere", &su);
+    warp_agreement a = warp_compare(&cosine, &uniform, N_CHI2, seed);
     assert_true(negctl_record(t, "cosine vs uniform hemisphere", "two-sample agreement",
                               a.pvalue < chi2_suite_alpha()));
 }
 
 int main(void)
 {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_sphere_all_checks),
-        cmocka_unit_test(test_hemisphere_all_checks),
-        cmocka_unit_test(test_cosine_all_checks),
-        cmocka_unit_test(test_agreement_sphere_and_cosine),
-        cmocka_unit_test(test_cosine_book_equals_acos),
-        cmocka_unit_test(test_negative_controls),
-    };
-    return cmocka_run_group_tests_name("test_samplers_dir", tests, negctl_group_setup,
-                                       negctl_group_teardown);
+    struct CMUnitTest tests[64];
+    size_t n = 0;
+    warp_catalog_tests(families, 2, tests, &n, 60);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_agreement_sphere_and_cosine);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_cosine_book_equals_acos);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_negative_controls);
+    return _cmocka_run_group_tests("test_samplers_dir", tests, n, negctl_group_setup,
+                                   negctl_group_teardown);
 }

@@ -33,50 +33,18 @@
 enum { N_CHI2 = 1000000 };
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
-/* Wrappers from the samplers' signatures to warp_case's. */
-WARP_TRIO_PARAM(phong, phong_lobe)
-WARP_TRIO_PARAM(ggx, ggx)
-WARP_TRIO_PARAM(cone, uniform_cone)
+/* The rows of the catalog this program tests (chi-square, normalization,
+ * domain and round trip of every case: tests built in main). Lobes are
+ * histogrammed in the catalog's lobe chart, cones in (cos theta, phi). */
+static const char *const families[] = {"lobes", "cone"};
 
-#define LOBE_CASE(nm, s, p, inv, prm, scale)                                                       \
-    {                                                                                              \
-        .name = nm, .sample = s, .pdf = p, .invert = inv, .param = prm, .direction = true,         \
-        .rim_zero_ok = true, .kind = WARP_SCALED_THETA, .theta_scale = scale                       \
-    }
-#define CONE_CASE(nm, cmax)                                                                        \
-    {                                                                                              \
-        .name = nm, .sample = s_cone, .pdf = p_cone, .invert = i_cone, .param = cmax,              \
-        .direction = true, .kind = WARP_COS_PHI, .z_lo = cmax                                      \
-    }
-
-/* Lobe widths: cos^n falls to 1/e at theta ~ sqrt(2/n); GGX's D is
- * concentrated within theta ~ alpha. */
-static const warp_case lobe_cases[] = {
-    LOBE_CASE("phong-n1", s_phong, p_phong, i_phong, 1.0, 0.8),
-    LOBE_CASE("phong-n40", s_phong, p_phong, i_phong, 40.0, 0.22),
-    LOBE_CASE("ggx-a0.5", s_ggx, p_ggx, i_ggx, 0.5, 0.5),
-    LOBE_CASE("ggx-a0.25", s_ggx, p_ggx, i_ggx, 0.25, 0.25),
-    LOBE_CASE("ggx-a0.1", s_ggx, p_ggx, i_ggx, 0.1, 0.1),
-};
-
-static const warp_case cone_cases[] = {
-    CONE_CASE("cone-0.8", 0.8),
-    CONE_CASE("cone-0.2", 0.2),
-    CONE_CASE("cone--0.5", -0.5),
-};
-
-/* Seed 5001. */
-static void test_lobes_all_checks(void **state)
+/* The catalog's cone at cos_max, prepared into *s. */
+static warp_case cone_case(const char *name, double cos_max, cat_state *s)
 {
-    (void)state;
-    warp_run_cases(lobe_cases, COUNT(lobe_cases), N_CHI2, mc_test_seed(5001u));
-}
-
-/* Seed 5002. */
-static void test_cone_all_checks(void **state)
-{
-    (void)state;
-    warp_run_cases(cone_cases, COUNT(cone_cases), N_CHI2, mc_test_seed(5002u));
+    char prm[64];
+    snprintf(prm, sizeof prm, "cos_max=%.17g", cos_max);
+    cat_case tc = {name, prm, {0, 0}, 0.0, 0, 0};
+    return warp_case_of(cat_find("cone"), &tc, s);
 }
 
 /* --- the sphere as a cone ----------------------------------------------- */
@@ -195,13 +163,14 @@ static void test_sphere_cone_geometry(void **state)
 static void test_sphere_cone_all_checks(void **state)
 {
     (void)state;
+    static cat_state st[4];
     warp_case cases[] = {
-        CONE_CASE("sphere-cone-d1.05R", make_view(1.05).cos_max),
-        CONE_CASE("sphere-cone-d2R", make_view(2.0).cos_max),
-        CONE_CASE("sphere-cone-d10R", make_view(10.0).cos_max),
-        CONE_CASE("sphere-cone-inside", make_view(0.5).cos_max),
+        cone_case("sphere-cone-d1.05R", make_view(1.05).cos_max, &st[0]),
+        cone_case("sphere-cone-d2R", make_view(2.0).cos_max, &st[1]),
+        cone_case("sphere-cone-d10R", make_view(10.0).cos_max, &st[2]),
+        cone_case("sphere-cone-inside", make_view(0.5).cos_max, &st[3]),
     };
-    warp_run_cases(cases, COUNT(cases), N_CHI2, mc_test_seed(5004u));
+    warp_run_cases(cases, COUNT(cases), 0, N_CHI2, mc_test_seed(5004u));
 }
 
 /* --- thin cones: 1 - cos theta_max without cancellation ------------------ */
@@ -471,7 +440,6 @@ static warp_case quad_case(const quad_view *v, const char *name)
                    .pdf = p_quad_dir,
                    .in_support = quad_support,
                    .direction = true,
-                   .kind = WARP_CUSTOM,
                    .to_param = quad_to_param,
                    .param_pdf = quad_param_pdf,
                    .lo = {0.0, 0.0},
@@ -497,44 +465,61 @@ static void test_area_to_solid_angle(void **state)
     assert_near(smp_area_to_solid_angle(0.5, 4.0, 0.25), 8.0, 1e-15);
     quad_view v = make_quad_view();
     warp_case c = quad_case(&v, "area-to-solid-angle-quad");
-    warp_run_cases(&c, 1, N_CHI2, mc_test_seed(5005u));
+    warp_run_cases(&c, 1, 0, N_CHI2, mc_test_seed(5005u));
 }
 
 /* --- negative controls -------------------------------------------------- */
 
 /* The cone's solid angle taken as the flat disc pi theta_max^2 (a pdf from
  * theta instead of cos theta). */
-static double p_cone_from_theta(vec3 w, const warp_case *c)
+static double p_cone_from_theta(const cat_state *s, const double w[3])
 {
-    double theta_max = acos(c->param);
-    return w.z >= c->param ? 1.0 / (MC_PI * theta_max * theta_max) : 0.0;
+    double theta_max = acos(s->p.cos_max);
+    return w[2] >= s->p.cos_max ? 1.0 / (MC_PI * theta_max * theta_max) : 0.0;
 }
 
-static double p_phong_n(vec3 w, const warp_case *c)
+static double p_phong_n(const cat_state *s, const double w[3])
 {
-    return w.z >= 0.0 ? c->param * MC_INV_2PI * pow(w.z, c->param) : 0.0;
+    return w[2] >= 0.0 ? s->p.n * MC_INV_2PI * pow(w[2], s->p.n) : 0.0;
 }
 
 /* D(h) alone, per unit solid angle. */
-static double p_ggx_no_cos(vec3 h, const warp_case *c)
+static double p_ggx_no_cos(const cat_state *s, const double h[3])
 {
-    return h.z > 0.0 ? smp_ggx_pdf(h, c->param) / h.z : 0.0;
+    return h[2] > 0.0 ? smp_ggx_pdf(vec3_make(h[0], h[1], h[2]), s->p.alpha) / h[2] : 0.0;
+}
+
+/* The catalog row `name` with its pdf replaced, at the parameters and
+ * lobe width given, prepared into *s; *row holds the copy. */
+static warp_case control(const char *label, const char *name, cat_row *row,
+                         double (*wrong)(const cat_state *, const double *), const char *params,
+                         double lobe_width, cat_state *s)
+{
+    *row = *cat_find(name);
+    row->pdf = wrong;
+    row->invert = NULL;
+    cat_case tc = {label, params, {0, 0}, lobe_width, 0, 0};
+    return warp_case_of(row, &tc, s);
 }
 
 /* Seed 5006 for the chi-square control. */
 static void test_negative_controls(void **state)
 {
     negctl *t = *state;
-    warp_case cone = CONE_CASE("negctl-cone-from-theta", 0.8);
-    cone.pdf = p_cone_from_theta;
+    static cat_row rows[3];
+    static cat_state st[3];
+    warp_case cone = control("negctl-cone-from-theta", "cone", &rows[0], p_cone_from_theta,
+                             "cos_max=0.8", 0.0, &st[0]);
     assert_true(negctl_record(t, "cone pdf from theta (pi theta_max^2)", "normalization",
                               warp_norm_rejects(&cone)));
 
-    warp_case phong = LOBE_CASE("negctl-phong-n", s_phong, p_phong_n, NULL, 40.0, 0.22);
+    warp_case phong =
+        control("negctl-phong-n", "phong", &rows[1], p_phong_n, "n=40", 0.22, &st[1]);
     assert_true(negctl_record(t, "Phong lobe normalized with n, not n + 1", "normalization",
                               warp_norm_rejects(&phong)));
 
-    warp_case ggx = LOBE_CASE("negctl-ggx-no-cos", s_ggx, p_ggx_no_cos, NULL, 0.5, 0.5);
+    warp_case ggx =
+        control("negctl-ggx-no-cos", "ggx", &rows[2], p_ggx_no_cos, "alpha=0.5", 0.5, &st[2]);
     assert_true(negctl_record(t, "GGX without its cos theta_h", "chi-square",
                               warp_chi2_rejects(&ggx, N_CHI2, mc_test_seed(5006u))));
 
@@ -554,12 +539,16 @@ static void test_negative_controls(void **state)
 
 int main(void)
 {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_lobes_all_checks),     cmocka_unit_test(test_cone_all_checks),
+    struct CMUnitTest tests[64];
+    size_t n = 0;
+    warp_catalog_tests(families, 2, tests, &n, 56);
+    const struct CMUnitTest rest[] = {
         cmocka_unit_test(test_sphere_cone_geometry), cmocka_unit_test(test_sphere_cone_all_checks),
         cmocka_unit_test(test_thin_cone_density),    cmocka_unit_test(test_thin_cone_samples),
         cmocka_unit_test(test_area_to_solid_angle),  cmocka_unit_test(test_negative_controls),
     };
-    return cmocka_run_group_tests_name("test_samplers_lobes", tests, negctl_group_setup,
-                                       negctl_group_teardown);
+    for (size_t i = 0; i < sizeof rest / sizeof rest[0]; i++)
+        tests[n++] = rest[i];
+    return _cmocka_run_group_tests("test_samplers_lobes", tests, n, negctl_group_setup,
+                                   negctl_group_teardown);
 }

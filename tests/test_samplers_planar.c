@@ -22,33 +22,9 @@
 enum { N_CHI2 = 1000000 };
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
-static vec3 lift2(vec2 p)
-{
-    return vec3_make(p.x, p.y, 0.0);
-}
-
-static vec2 drop3(vec3 p)
-{
-    return vec2_make(p.x, p.y);
-}
-
-/* warp_case wrappers of a planar trio smp_<name>_{sample,pdf,invert}. */
-#define WRAP_PLANAR(tag, name)                                                                     \
-    WARP_WRAP_SAMPLE(s_##tag, lift2(smp_##name##_sample(u1, u2)))                                  \
-    WARP_WRAP_PDF(p_##tag, smp_##name##_pdf(drop3(w)))                                             \
-    WARP_WRAP_INV(i_##tag, smp_##name##_invert(drop3(w)))
-
-WRAP_PLANAR(square, unit_square)
-WRAP_PLANAR(polar, disc_polar)
-WRAP_PLANAR(conc, disc_concentric)
-WRAP_PLANAR(tri, triangle)
-
-/* The support of the triangle, exactly (no slack beyond 4 ulps). */
-static bool tri_support(vec3 p, const warp_case *c)
-{
-    (void)c;
-    return p.x >= 0.0 && p.y >= 0.0 && p.x + p.y <= 1.0 + 4.0 * 0x1p-52 && p.z == 0.0;
-}
+/* The rows of the catalog this program tests (chi-square, normalization,
+ * domain and round trip of every case: tests built in main). */
+static const char *const families[] = {"planar"};
 
 /* --- parallelogram and sphere surface, with "high-entropy" shapes -------- */
 
@@ -72,11 +48,11 @@ static vec3 s_para(double u1, double u2, const warp_case *c)
 static double p_para(vec3 p, const warp_case *c)
 {
     const shape3 *s = c->extra;
-    double pdf = smp_parallelogram_pdf(p, s->corner, s->eu, s->ev);
+    double density = smp_parallelogram_pdf(p, s->corner, s->eu, s->ev);
     /* The classic slip: |u| |v| for the area, right only for a rectangle. */
-    if (s->wrong_pdf && pdf > 0.0)
+    if (s->wrong_pdf && density > 0.0)
         return 1.0 / (vec3_length(s->eu) * vec3_length(s->ev));
-    return pdf;
+    return density;
 }
 
 static vec2 i_para(vec3 p, const warp_case *c)
@@ -127,9 +103,9 @@ static vec3 s_ball(double u1, double u2, const warp_case *c)
 static double p_ball(vec3 p, const warp_case *c)
 {
     const shape3 *s = c->extra;
-    double pdf = smp_sphere_surface_pdf(p, s->center, s->radius);
+    double density = smp_sphere_surface_pdf(p, s->center, s->radius);
     /* The slip: r instead of r^2 in the area 4 pi r^2. */
-    return s->wrong_pdf ? pdf * s->radius : pdf;
+    return s->wrong_pdf ? density * s->radius : density;
 }
 
 static vec2 i_ball(vec3 p, const warp_case *c)
@@ -164,52 +140,29 @@ static bool ball_support(vec3 p, const warp_case *c)
 #define PARA_CASE(nm, shape)                                                                       \
     {                                                                                              \
         .name = nm, .sample = s_para, .pdf = p_para, .invert = i_para, .in_support = para_support, \
-        .kind = WARP_CUSTOM, .to_param = para_to_param, .param_pdf = para_param_pdf,               \
+        .to_param = para_to_param, .param_pdf = para_param_pdf,               \
         .lo = {0.0, 0.0}, .hi = {1.0, 1.0}, .cells = {50, 50}, .extra = shape                      \
     }
 #define BALL_CASE(nm, shape)                                                                       \
     {                                                                                              \
         .name = nm, .sample = s_ball, .pdf = p_ball, .invert = i_ball, .in_support = ball_support, \
-        .kind = WARP_CUSTOM, .to_param = ball_to_param, .param_pdf = ball_param_pdf,               \
+        .to_param = ball_to_param, .param_pdf = ball_param_pdf,               \
         .lo = {-1.0, 0.0}, .hi = {1.0, MC_2PI}, .extra = shape                                     \
     }
 
-static const warp_case planar_cases[] = {
-    {.name = "square",
-     .sample = s_square,
-     .pdf = p_square,
-     .invert = i_square,
-     .kind = WARP_XY,
-     .cells = {50, 50}},
-    {.name = "disc-polar",
-     .sample = s_polar,
-     .pdf = p_polar,
-     .invert = i_polar,
-     .kind = WARP_R2_PHI},
-    {.name = "disc-concentric",
-     .sample = s_conc,
-     .pdf = p_conc,
-     .invert = i_conc,
-     .kind = WARP_R2_PHI},
-    /* The square's cells are cut by the hypotenuse only along their
-     * diagonal (40 x 40 cells, the same count per axis), which keeps the
-     * nested quadrature of the cut cells cheap. */
-    {.name = "triangle",
-     .sample = s_tri,
-     .pdf = p_tri,
-     .invert = i_tri,
-     .in_support = tri_support,
-     .kind = WARP_XY,
-     .cells = {40, 40}},
+/* The two shapes the catalog has no row for (they take a whole shape as
+ * parameters), at positions 4 and 5 of the planar group after the
+ * catalog's square, discs and triangle (seed 6001). */
+static const warp_case shape_cases[] = {
     PARA_CASE("parallelogram", &para),
     BALL_CASE("sphere-surface", &ball),
 };
 
 /* Seed 6001; per case as in warp_run_cases. */
-static void test_planar_all_checks(void **state)
+static void test_shapes_all_checks(void **state)
 {
     (void)state;
-    warp_run_cases(planar_cases, COUNT(planar_cases), N_CHI2, mc_test_seed(6001u));
+    warp_run_cases(shape_cases, COUNT(shape_cases), 4, N_CHI2, mc_test_seed(6001u));
 }
 
 /* Known answers where the warps meet their special points. */
@@ -238,18 +191,33 @@ static void test_planar_special_points(void **state)
 /* --- negative controls -------------------------------------------------- */
 
 /* r = u2 instead of sqrt(u2): the points crowd at the centre. */
-static vec3 s_disc_no_sqrt(double u1, double u2, const warp_case *c)
+static void s_disc_no_sqrt(const cat_state *s, const double *u, double x[3])
 {
-    (void)c;
-    double phi = MC_2PI * u1;
-    return vec3_make(u2 * cos(phi), u2 * sin(phi), 0.0);
+    (void)s;
+    double phi = MC_2PI * u[0];
+    x[0] = u[1] * cos(phi), x[1] = u[1] * sin(phi);
 }
 
 /* (1 - u1, u2 u1): the triangle without the sqrt. */
-static vec3 s_tri_no_sqrt(double u1, double u2, const warp_case *c)
+static void s_tri_no_sqrt(const cat_state *s, const double *u, double x[3])
 {
-    (void)c;
-    return vec3_make(1.0 - u1, u2 * u1, 0.0);
+    (void)s;
+    x[0] = 1.0 - u[0], x[1] = u[1] * u[0];
+}
+
+/* The catalog case `name` with its sampler replaced; *row holds the copy. */
+static warp_case control(const char *label, const char *name, cat_row *row,
+                         void (*sample)(const cat_state *, const double *, double *),
+                         cat_state *s)
+{
+    const cat_row *r = NULL;
+    const cat_case *tc = cat_find_case(name, &r);
+    *row = *r;
+    row->sample_u = sample;
+    row->invert = NULL;
+    warp_case c = warp_case_of(row, tc, s);
+    c.name = label;
+    return c;
 }
 
 /* Seed 6002 for the sampled controls. */
@@ -257,17 +225,13 @@ static void test_negative_controls(void **state)
 {
     negctl *t = *state;
     uint64_t seed = mc_test_seed(6002u);
-    warp_case disc = planar_cases[1];
-    disc.name = "negctl-disc-no-sqrt";
-    disc.sample = s_disc_no_sqrt;
-    disc.invert = NULL;
+    static cat_row rows[2];
+    static cat_state st[2];
+    warp_case disc = control("negctl-disc-no-sqrt", "disc-polar", &rows[0], s_disc_no_sqrt, &st[0]);
     assert_true(negctl_record(t, "disc radius without the sqrt", "chi-square",
                               warp_chi2_rejects(&disc, N_CHI2, seed)));
 
-    warp_case tri = planar_cases[3];
-    tri.name = "negctl-triangle-no-sqrt";
-    tri.sample = s_tri_no_sqrt;
-    tri.invert = NULL;
+    warp_case tri = control("negctl-triangle-no-sqrt", "triangle", &rows[1], s_tri_no_sqrt, &st[1]);
     assert_true(negctl_record(t, "triangle without the sqrt", "chi-square",
                               warp_chi2_rejects(&tri, N_CHI2, seed + 1u)));
 
@@ -285,11 +249,12 @@ static void test_negative_controls(void **state)
 
 int main(void)
 {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_planar_all_checks),
-        cmocka_unit_test(test_planar_special_points),
-        cmocka_unit_test(test_negative_controls),
-    };
-    return cmocka_run_group_tests_name("test_samplers_planar", tests, negctl_group_setup,
-                                       negctl_group_teardown);
+    struct CMUnitTest tests[64];
+    size_t n = 0;
+    warp_catalog_tests(families, 1, tests, &n, 60);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_shapes_all_checks);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_planar_special_points);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_negative_controls);
+    return _cmocka_run_group_tests("test_samplers_planar", tests, n, negctl_group_setup,
+                                   negctl_group_teardown);
 }

@@ -14,94 +14,87 @@
 #include "samplers/spherical.h"
 #include "tests/support/mc_test.h"
 
-/* --- parameterizations -------------------------------------------------- */
+/* --- a case's functions: the catalog row's, or its own ----------------- */
 
-static double scaled_x_max(const warp_case *c)
+static vec3 get3(const double x[3])
 {
-    return MC_PI_2 / (MC_PI_2 + c->theta_scale);
+    return vec3_make(x[0], x[1], x[2]);
 }
 
-static void rectangle(const warp_case *c, double lo[2], double hi[2])
+warp_case warp_case_of(const cat_row *r, const cat_case *tc, cat_state *s)
 {
-    lo[1] = 0.0;
-    hi[1] = MC_2PI;
-    switch (c->kind) {
-    case WARP_COS_PHI:
-        lo[0] = c->z_lo;
-        hi[0] = 1.0;
-        break;
-    case WARP_SCALED_THETA:
-        lo[0] = 0.0;
-        hi[0] = scaled_x_max(c);
-        break;
-    case WARP_R2_PHI:
-        lo[0] = 0.0;
-        hi[0] = 1.0;
-        break;
-    case WARP_XY:
-        lo[0] = lo[1] = 0.0;
-        hi[0] = hi[1] = 1.0;
-        break;
-    case WARP_CUSTOM:
-        lo[0] = c->lo[0], lo[1] = c->lo[1];
-        hi[0] = c->hi[0], hi[1] = c->hi[1];
-        break;
+    char err[256];
+    if (!cat_prepare_case(r, tc, s, err, sizeof err))
+        fail_msg("%s: %s", tc->name, err);
+    warp_case c;
+    memset(&c, 0, sizeof c);
+    c.name = tc->name;
+    c.cat = s;
+    c.cells[0] = tc->cells[0], c.cells[1] = tc->cells[1];
+    c.direction = r->point == CAT_DIRECTION;
+    return c;
+}
+
+static bool has_invert(const warp_case *c)
+{
+    return c->cat ? c->cat->row->invert != NULL : c->invert != NULL;
+}
+
+/* Whether the case maps two uniforms (the edge grid and the round trip
+ * need them). */
+static bool two_uniforms(const warp_case *c)
+{
+    return c->cat ? c->cat->row->uniforms == 2 : c->sample != NULL;
+}
+
+static vec3 sample_u(const warp_case *c, double u1, double u2)
+{
+    if (!c->cat)
+        return c->sample(u1, u2, c);
+    double u[2] = {u1, u2}, x[3] = {0.0, 0.0, 0.0};
+    c->cat->row->sample_u(c->cat, u, x);
+    return get3(x);
+}
+
+static vec2 invert(const warp_case *c, vec3 x)
+{
+    if (!c->cat)
+        return c->invert(x, c);
+    double y[3] = {x.x, x.y, x.z}, u[2];
+    c->cat->row->invert(c->cat, y, u);
+    return vec2_make(u[0], u[1]);
+}
+
+static double density(const warp_case *c, vec3 x)
+{
+    double y[3] = {x.x, x.y, x.z};
+    return c->cat ? cat_pdf(c->cat, y) : c->pdf(x, c);
+}
+
+static vec3 draw(const warp_case *c, mc_rng *rng)
+{
+    if (c->cat) {
+        double x[3];
+        cat_sample(c->cat, rng, x);
+        return get3(x);
     }
+    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    return c->sample(u1, u2, c);
 }
 
 static void to_param(const warp_case *c, vec3 x, double out[2])
 {
-    switch (c->kind) {
-    case WARP_COS_PHI:
-        out[0] = x.z;
-        out[1] = smp_spherical_phi(x);
-        break;
-    case WARP_SCALED_THETA: {
-        double theta = smp_spherical_theta(x);
-        out[0] = theta / (theta + c->theta_scale);
-        out[1] = smp_spherical_phi(x);
-        break;
-    }
-    case WARP_R2_PHI:
-        out[0] = x.x * x.x + x.y * x.y;
-        out[1] = smp_spherical_phi(vec3_make(x.x, x.y, 0.0));
-        break;
-    case WARP_XY: out[0] = x.x, out[1] = x.y; break;
-    case WARP_CUSTOM: c->to_param(x, c, out); break;
-    }
+    double y[3] = {x.x, x.y, x.z};
+    if (c->cat)
+        cat_chart_point(c->cat, y, out);
+    else
+        c->to_param(x, c, out);
 }
 
 static double param_pdf(const double p[2], void *ctx)
 {
     const warp_case *c = ctx;
-    switch (c->kind) {
-    case WARP_COS_PHI: return c->pdf(smp_spherical_direction(p[0], p[1]), c);
-    case WARP_SCALED_THETA: {
-        /* theta = s x / (1 - x), d theta / dx = s / (1 - x)^2, and the
-         * solid angle element is sin theta d theta d phi. */
-        double s = c->theta_scale, x = p[0];
-        double theta = s * x / (1.0 - x);
-        if (theta > MC_PI_2)
-            return 0.0;
-        vec3 w = smp_spherical_direction(cos(theta), p[1]);
-        return c->pdf(w, c) * sin(theta) * s / ((1.0 - x) * (1.0 - x));
-    }
-    case WARP_R2_PHI: {
-        double r = sqrt(p[0]);
-        return 0.5 * c->pdf(vec3_make(r * cos(p[1]), r * sin(p[1]), 0.0), c);
-    }
-    case WARP_XY: return c->pdf(vec3_make(p[0], p[1], 0.0), c);
-    case WARP_CUSTOM: return c->param_pdf(p, c);
-    }
-    return 0.0;
-}
-
-static vec3 draw(const warp_case *c, mc_rng *rng)
-{
-    if (c->sample_rng)
-        return c->sample_rng(rng, c);
-    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-    return c->sample(u1, u2, c);
+    return c->cat ? cat_chart_density(c->cat, p) : c->param_pdf(p, c);
 }
 
 static void chi2_sample(mc_rng *rng, void *ctx, double out[2])
@@ -110,18 +103,31 @@ static void chi2_sample(mc_rng *rng, void *ctx, double out[2])
     to_param(c, draw(c, rng), out);
 }
 
+/* The case's chart as mc/gof.h sees it, at the case's resolution. */
+static mc_gof_spec gof_spec(const warp_case *c)
+{
+    mc_gof_spec g;
+    if (c->cat) {
+        g = cat_gof_spec(c->cat, c->cells);
+    } else {
+        g = (mc_gof_spec){2, {c->lo[0], c->lo[1]}, {c->hi[0], c->hi[1]}, {50, 100}, NULL, NULL,
+                          NULL};
+        if (c->cells[0] > 0)
+            g.cells[0] = c->cells[0], g.cells[1] = c->cells[1];
+    }
+    g.sample = chi2_sample;
+    g.pdf = param_pdf;
+    g.ctx = (void *)c; /* read only, as mc_gof_spec documents */
+    return g;
+}
+
 chi2_spec warp_chi2_spec(const warp_case *c)
 {
-    chi2_spec s;
-    memset(&s, 0, sizeof s);
-    s.name = c->name;
-    s.dims = 2;
-    rectangle(c, s.lo, s.hi);
-    s.cells[0] = c->cells[0] > 0 ? c->cells[0] : 50;
-    s.cells[1] = c->cells[1] > 0 ? c->cells[1] : 100;
-    s.sample = chi2_sample;
-    s.pdf = param_pdf;
-    s.ctx = (void *)c; /* read only, as chi2_spec documents */
+    mc_gof_spec g = gof_spec(c);
+    chi2_spec s = {c->name,           g.dims,
+                   {g.lo[0], g.lo[1]}, {g.hi[0], g.hi[1]},
+                   {g.cells[0], g.cells[1]}, g.sample,
+                   g.pdf,             g.ctx};
     return s;
 }
 
@@ -157,16 +163,29 @@ bool warp_chi2_rejects(const warp_case *c, uint64_t n, uint64_t seed)
 /* Support slack: 4 ulps of 1, as in samplers/planar.c. */
 #define SLACK (4.0 * DBL_EPSILON)
 
-static bool default_support(vec3 x, const warp_case *c)
+/* The support of a catalog row without its own: its chart's domain (a
+ * direction chart about +z: cos theta from the chart's lower end). */
+static bool in_support(const warp_case *c, vec3 x)
 {
-    switch (c->kind) {
-    case WARP_COS_PHI: return x.z >= c->z_lo - SLACK;
-    case WARP_SCALED_THETA: return x.z >= -SLACK;
-    case WARP_R2_PHI: return x.x * x.x + x.y * x.y <= 1.0 + SLACK && x.z == 0.0;
-    case WARP_XY: return x.x >= 0.0 && x.x <= 1.0 && x.y >= 0.0 && x.y <= 1.0 && x.z == 0.0;
-    case WARP_CUSTOM: return true;
+    if (!c->cat)
+        return c->in_support ? c->in_support(x, c) : true;
+    const cat_state *s = c->cat;
+    double y[3] = {x.x, x.y, x.z};
+    if (s->row->in_support)
+        return s->row->in_support(s, y);
+    switch (s->row->chart) {
+    case CAT_CHART_DIRECTION:
+    case CAT_CHART_LOBE:
+        return x.z >= s->dir_chart.cos_lo - SLACK;
+    case CAT_CHART_DISC: return x.x * x.x + x.y * x.y <= 1.0 + SLACK && x.z == 0.0;
+    case CAT_CHART_XY: return x.x >= 0.0 && x.x <= 1.0 && x.y >= 0.0 && x.y <= 1.0 && x.z == 0.0;
+    default: return true;
     }
-    return false;
+}
+
+static bool rim_zero_ok(const warp_case *c)
+{
+    return c->cat && c->cat->row->rim_zero;
 }
 
 /* BEGIN SNIPPET warp_domain_one */
@@ -183,13 +202,12 @@ static void check_one(const warp_case *c, vec3 x, warp_domain *d)
             d->not_unit++;
             bad = true;
         }
-        bool in = c->in_support ? c->in_support(x, c) : default_support(x, c);
-        if (!in) {
+        if (!in_support(c, x)) {
             d->outside++;
             bad = true;
         }
-        double p = c->pdf(x, c);
-        if (!(p > 0.0) && !(c->rim_zero_ok && x.z == 0.0)) {
+        double p = density(c, x);
+        if (!(p > 0.0) && !(rim_zero_ok(c) && x.z == 0.0)) {
             d->zero_pdf++;
             bad = true;
         }
@@ -206,7 +224,7 @@ warp_domain warp_check_domain(const warp_case *c, uint64_t n, uint64_t seed)
     mc_rng rng = mc_rng_derive(seed, 1u);
     for (uint64_t k = 0; k < n; k++)
         check_one(c, draw(c, &rng), &d);
-    if (c->sample) {
+    if (two_uniforms(c)) {
         /* The extreme uniforms mc_rng_uniform can return, and their
          * neighbours: where a warp meets a pole, a rim or a corner. */
         static const double edge[] = {0.0, 0x1p-32,       0x1p-31, 0.25,          0.5 - 0x1p-32,
@@ -214,7 +232,7 @@ warp_domain warp_check_domain(const warp_case *c, uint64_t n, uint64_t seed)
         size_t m = sizeof edge / sizeof edge[0];
         for (size_t i = 0; i < m; i++)
             for (size_t j = 0; j < m; j++)
-                check_one(c, c->sample(edge[i], edge[j], c), &d);
+                check_one(c, sample_u(c, edge[i], edge[j]), &d);
     }
     return d;
 }
@@ -230,8 +248,8 @@ bool warp_domain_ok(const warp_domain *d)
 /* BEGIN SNIPPET warp_roundtrip */
 static double rt_one(const warp_case *c, double u1, double u2)
 {
-    vec3 x = c->sample(u1, u2, c);
-    vec2 v = c->invert(x, c);
+    vec3 x = sample_u(c, u1, u2);
+    vec2 v = invert(c, x);
     double e2 = fabs(v.y - u2);
     /* On the polar axis (or the disc centre) the azimuth, hence u1, is not
      * recoverable: only u2 is compared there. */
@@ -277,8 +295,9 @@ static void histogram(const warp_case *c, const warp_case *frame, uint64_t n, mc
                       double *h)
 {
     framed f = {c, frame};
-    mc_gof_spec s = {2, {0.0, 0.0}, {0.0, 0.0}, {AGREE_NX, AGREE_NY}, framed_sample, NULL, &f};
-    rectangle(frame, s.lo, s.hi);
+    mc_gof_spec s = gof_spec(frame);
+    s.cells[0] = AGREE_NX, s.cells[1] = AGREE_NY;
+    s.sample = framed_sample, s.pdf = NULL, s.ctx = &f;
     h[AGREE_NX * AGREE_NY] = mc_gof_histogram(&s, rng, n, h);
 }
 
@@ -321,76 +340,146 @@ warp_agreement warp_compare(const warp_case *a, const warp_case *b, uint64_t n, 
     return r;
 }
 
-void warp_print_summary(const warp_case *c, const chi2_outcome *o, double norm_err, double rt_err)
-{
-    char rt[32];
-    if (c->invert)
-        snprintf(rt, sizeof rt, "%.2e", rt_err);
-    else
-        snprintf(rt, sizeof rt, "-");
-    printf("sampler %-26s chi2 %10.2f dof %5d p %.4f norm_err %.2e roundtrip %s %s\n", c->name,
-           o->r.stat, o->r.dof, o->r.pvalue, fabs(norm_err), rt, o->reject ? "REJECT" : "ok");
-}
-
 /* The seed of case i of a table: hashed, so that neighbouring cases and
  * neighbouring base seeds share no streams. */
-static uint64_t case_seed(uint64_t seed, int i)
+uint64_t warp_case_seed(uint64_t seed, int seq)
 {
-    mc_rng r = mc_rng_derive(seed, (uint64_t)i + 100u);
+    mc_rng r = mc_rng_derive(seed, (uint64_t)seq + 100u);
     return (uint64_t)mc_rng_u32(&r) << 32 | mc_rng_u32(&r);
 }
 
-typedef struct case_result {
-    chi2_outcome o;
-    double norm_err, rt_err;
-    warp_domain d;
-} case_result;
-
-void warp_run_cases(const warp_case *cases, int m, uint64_t n, uint64_t seed)
+/* Runs check k of c; true when it passes. Writes what went wrong to msg. */
+static bool run_check(const warp_case *c, warp_check_kind k, uint64_t n, uint64_t seed,
+                      char *msg, size_t size)
 {
-    case_result *res = calloc((size_t)m, sizeof *res);
-    assert_non_null(res);
-#pragma omp parallel for schedule(dynamic)
-    for (int i = 0; i < m; i++) {
-        const warp_case *c = &cases[i];
-        uint64_t s = case_seed(seed, i);
-        res[i].o = warp_chi2(c, n, s);
-        res[i].norm_err = warp_norm_error(c);
-        res[i].d = warp_check_domain(c, 100000u, s);
-        res[i].rt_err = c->invert ? warp_roundtrip_error(c, 64) : 0.0;
+    switch (k) {
+    case WARP_CHECK_CHI2: {
+        chi2_outcome o = warp_chi2(c, n, seed);
+        printf("sampler %-26s chi2 %10.2f dof %5d p %.4f %s\n", c->name, o.r.stat, o.r.dof,
+               o.r.pvalue, o.reject ? "REJECT" : "ok");
+        if (o.reject) {
+            chi2_spec s = warp_chi2_spec(c);
+            chi2_print(&s, &o);
+        }
+        snprintf(msg, size, "%s: chi-square rejects (seed %llu)", c->name,
+                 (unsigned long long)seed);
+        return !o.reject;
     }
+    case WARP_CHECK_NORM: {
+        double e = warp_norm_error(c);
+        printf("sampler %-26s norm_err %.2e\n", c->name, fabs(e));
+        snprintf(msg, size, "%s: pdf integrates to 1 %+.3g", c->name, e);
+        return fabs(e) <= WARP_NORM_TOL;
+    }
+    case WARP_CHECK_DOMAIN: {
+        warp_domain d = warp_check_domain(c, 100000u, seed);
+        printf("sampler %-26s domain %llu samples\n", c->name, (unsigned long long)d.n);
+        snprintf(msg, size,
+                 "%s: domain: %llu not finite, %llu not unit, %llu outside, %llu zero pdf of "
+                 "%llu; first (%.17g, %.17g, %.17g) (seed %llu)",
+                 c->name, (unsigned long long)d.not_finite, (unsigned long long)d.not_unit,
+                 (unsigned long long)d.outside, (unsigned long long)d.zero_pdf,
+                 (unsigned long long)d.n, d.example.x, d.example.y, d.example.z,
+                 (unsigned long long)seed);
+        return warp_domain_ok(&d);
+    }
+    case WARP_CHECK_ROUNDTRIP: {
+        double e = warp_roundtrip_error(c, 64);
+        printf("sampler %-26s roundtrip %.2e\n", c->name, e);
+        snprintf(msg, size, "%s: round trip error %.3g >= 1e-9", c->name, e);
+        return e < WARP_RT_TOL;
+    }
+    }
+    return false;
+}
+
+void warp_check(const warp_case *c, warp_check_kind k, uint64_t n, uint64_t seed)
+{
+    char msg[512];
+    if (!run_check(c, k, n, seed, msg, sizeof msg))
+        fail_msg("%s", msg);
+}
+
+/* One test of the catalog: its case, prepared, and the check to run. */
+typedef struct catalog_test {
+    cat_state state;
+    warp_case c;
+    warp_check_kind k;
+    uint64_t seed;
+    char name[96];
+} catalog_test;
+
+/* The registered tests, in the order cmocka runs them. cmocka hands a
+ * test its initial_state only when the group has no state of its own, and
+ * these groups keep their negative-control tally there; so each run takes
+ * the next registered test instead (cmocka runs a group's tests in array
+ * order, every one of them). */
+enum { MAX_CATALOG_TESTS = 256 };
+static catalog_test *registered[MAX_CATALOG_TESTS];
+static size_t n_registered, n_run;
+
+static void catalog_test_run(void **state)
+{
+    (void)state;
+    assert_true(n_run < n_registered);
+    const catalog_test *t = registered[n_run++];
+    warp_check(&t->c, t->k, 1000000u, t->seed);
+}
+
+void warp_catalog_tests(const char *const *families, int n_families, struct CMUnitTest *tests,
+                        size_t *count, size_t max)
+{
+    static const char *const check_name[] = {"chi-square", "normalization", "domain",
+                                             "round trip"};
+    for (size_t i = 0; i < cat_count(); i++) {
+        const cat_row *r = cat_at(i);
+        bool mine = false;
+        for (int f = 0; f < n_families; f++)
+            mine = mine || strcmp(r->family, families[f]) == 0;
+        for (const cat_case *tc = r->cases; mine && tc->name; tc++)
+            for (int k = WARP_CHECK_CHI2; k <= WARP_CHECK_ROUNDTRIP; k++) {
+                if (k == WARP_CHECK_ROUNDTRIP && !r->invert)
+                    continue;
+                if (*count == max || n_registered == MAX_CATALOG_TESTS)
+                    return;
+                /* Lives as long as the program: cmocka holds its address. */
+                catalog_test *t = calloc(1, sizeof *t);
+                if (!t)
+                    return;
+                char err[256];
+                if (!cat_prepare_case(r, tc, &t->state, err, sizeof err)) {
+                    fprintf(stderr, "%s: %s\n", tc->name, err);
+                    free(t);
+                    continue;
+                }
+                t->c = (warp_case){.name = tc->name,
+                                   .cat = &t->state,
+                                   .cells = {tc->cells[0], tc->cells[1]},
+                                   .direction = r->point == CAT_DIRECTION};
+                t->k = (warp_check_kind)k;
+                t->seed = warp_case_seed(mc_test_seed(tc->seed), tc->seq);
+                snprintf(t->name, sizeof t->name, "%s: %s", tc->name, check_name[k]);
+                registered[n_registered++] = t;
+                tests[(*count)++] = (struct CMUnitTest){t->name, catalog_test_run, NULL, NULL, t};
+            }
+    }
+}
+
+void warp_run_cases(const warp_case *cases, int m, int first, uint64_t n, uint64_t seed)
+{
     int failures = 0;
     for (int i = 0; i < m; i++) {
-        const warp_case *c = &cases[i];
-        case_result *r = &res[i];
-        warp_print_summary(c, &r->o, r->norm_err, r->rt_err);
-        if (r->o.reject) {
-            chi2_spec s = warp_chi2_spec(c);
-            chi2_print(&s, &r->o);
-            print_error("%s: chi-square rejects (seed %llu)\n", c->name,
-                        (unsigned long long)case_seed(seed, i));
-            failures++;
-        }
-        if (!(fabs(r->norm_err) <= WARP_NORM_TOL)) {
-            print_error("%s: pdf integrates to 1 %+.3g\n", c->name, r->norm_err);
-            failures++;
-        }
-        if (!warp_domain_ok(&r->d)) {
-            print_error("%s: domain: %llu not finite, %llu not unit, %llu outside, %llu zero pdf "
-                        "of %llu; first (%.17g, %.17g, %.17g) (seed %llu)\n",
-                        c->name, (unsigned long long)r->d.not_finite,
-                        (unsigned long long)r->d.not_unit, (unsigned long long)r->d.outside,
-                        (unsigned long long)r->d.zero_pdf, (unsigned long long)r->d.n,
-                        r->d.example.x, r->d.example.y, r->d.example.z,
-                        (unsigned long long)case_seed(seed, i));
-            failures++;
-        }
-        if (c->invert && !(r->rt_err < WARP_RT_TOL)) {
-            print_error("%s: round trip error %.3g >= 1e-9\n", c->name, r->rt_err);
-            failures++;
+        uint64_t s = warp_case_seed(seed, first + i);
+        for (int k = WARP_CHECK_CHI2; k <= WARP_CHECK_ROUNDTRIP; k++) {
+            char msg[512];
+            if (k == WARP_CHECK_ROUNDTRIP && !has_invert(&cases[i]))
+                continue;
+            if (!run_check(&cases[i], (warp_check_kind)k, n, s, msg, sizeof msg)) {
+                print_error("%s\n", msg);
+                failures++;
+            }
         }
     }
-    free(res);
     if (failures)
         fail_msg("%d check(s) failed (base seed %llu)", failures, (unsigned long long)seed);
 }

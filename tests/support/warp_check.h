@@ -1,9 +1,9 @@
 /* tests/support/warp_check.h - the checks every warp of samplers/ must
  * pass, in one place, so that each sampler test is a table of cases.
  *
- * A warp_case wraps one sampler with one parameter set: how to draw a
- * sample (from two uniforms, or from an RNG), its claimed pdf, its inverse
- * if any, and the parameterization the chi-square harness histograms it in.
+ * A warp_case is one sampler with one parameter set: a row of the sampler
+ * catalog (catalog/catalog.h) with its parameters, or, for the few shapes
+ * and formulas the catalog has no row for, its own functions.
  * The checks RETURN their measurements instead of asserting, so that the
  * same check can be required to pass on a correct case and to fail on a
  * negative control. Serves chapter 5 ("Generating Random Directions") and
@@ -22,89 +22,39 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "catalog/catalog.h"
 #include "mc/rng.h"
 #include "mc/vec2.h"
 #include "mc/vec3.h"
 #include "tests/support/chi2_harness.h"
-
-/* How samples are mapped to the chi-square rectangle. */
-typedef enum warp_param {
-    /* Directions: (cos theta, phi) on [z_lo, 1] x [0, 2 pi]. Equal-area:
-     * the parameter density is the pdf per unit solid angle itself. */
-    WARP_COS_PHI,
-    /* Peaked directions: x = theta / (theta + theta_scale) and phi, on
-     * [0, x(pi/2)] x [0, 2 pi]. Spreads a lobe of width ~theta_scale over
-     * many cells; density pdf * sin theta * d theta / dx. */
-    WARP_SCALED_THETA,
-    /* Points of the unit disc: (r^2, phi) on [0, 1] x [0, 2 pi]; density
-     * pdf / 2 (d area = d(r^2) d phi / 2). */
-    WARP_R2_PHI,
-    /* Points of the unit square (and the triangle in it): (x, y). */
-    WARP_XY,
-    /* The case supplies to_param, param_pdf and the rectangle itself. */
-    WARP_CUSTOM
-} warp_param;
+#include "tests/support/mc_test.h"
 
 typedef struct warp_case warp_case;
 struct warp_case {
     const char *name;
-    /* The sample for uniforms (u1, u2); NULL when sample_rng is used. */
+    /* A row of the catalog with its parameters (catalog/catalog.h): its
+     * sampler, density, inverse, support and chart. NULL for a case that
+     * brings its own functions below (a shape the catalog has no row for,
+     * or a formula under test). */
+    const cat_state *cat;
+    int cells[2]; /* chi-square resolution; {0, 0}: the chart's (50 x 100) */
+    /* Own functions, when cat is NULL. */
     vec3 (*sample)(double u1, double u2, const warp_case *c);
-    /* A sampler that needs more than two uniforms or rejection. */
-    vec3 (*sample_rng)(mc_rng *rng, const warp_case *c);
-    /* The claimed density (per unit solid angle or per unit area). */
     double (*pdf)(vec3 x, const warp_case *c);
-    /* The inverse, or NULL. */
-    vec2 (*invert)(vec3 x, const warp_case *c);
-    /* The support, or NULL for the default of the parameterization
-     * (directions: z >= z_lo; disc; square; triangle needs its own). */
+    vec2 (*invert)(vec3 x, const warp_case *c); /* or NULL */
     bool (*in_support)(vec3 x, const warp_case *c);
-    double param;     /* n, alpha, cos_theta_max, ... */
-    bool direction;   /* unit-length check applies */
-    bool rim_zero_ok; /* pdf(sample) == 0 allowed exactly on z == 0 (cosine-like) */
-    warp_param kind;
-    double z_lo;        /* WARP_COS_PHI lower bound of cos theta (-1, 0, cos_max) */
-    double theta_scale; /* WARP_SCALED_THETA */
-    int cells[2];       /* chi-square resolution; {0, 0}: 50 x 100 */
-    /* WARP_CUSTOM: sample -> parameters, parameter density, rectangle. */
+    bool direction; /* unit-length check applies */
+    /* The chart: sample -> rectangle, the density of the rectangle. */
     void (*to_param)(vec3 x, const warp_case *c, double out[2]);
     double (*param_pdf)(const double p[2], const warp_case *c);
     double lo[2], hi[2];
-    const void *extra; /* case-specific data for the custom functions */
+    const void *extra; /* case-specific data for the functions */
 };
 
-/* warp_case adapters of samplers/ functions, defined as static functions
- * in the test file: WARP_WRAP_SAMPLE(name, expr) gives
- * vec3 name(u1, u2, c), WARP_WRAP_PDF and WARP_WRAP_INV give double and
- * vec2 name(w, c); expr may use u1, u2, w and c. WARP_TRIO(tag, stem)
- * wraps smp_<stem>_{sample,pdf,invert} as s_<tag>, p_<tag>, i_<tag>;
- * WARP_TRIO_PARAM passes c->param as their last argument. */
-#define WARP_WRAP_SAMPLE(name, expr)                                                               \
-    static vec3 name(double u1, double u2, const warp_case *c)                                     \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return expr;                                                                               \
-    }
-#define WARP_WRAP_PDF(name, expr)                                                                  \
-    static double name(vec3 w, const warp_case *c)                                                 \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return expr;                                                                               \
-    }
-#define WARP_WRAP_INV(name, expr)                                                                  \
-    static vec2 name(vec3 w, const warp_case *c)                                                   \
-    {                                                                                              \
-        (void)c;                                                                                   \
-        return expr;                                                                               \
-    }
-#define WARP_TRIO(tag, stem)                                                                       \
-    WARP_WRAP_SAMPLE(s_##tag, smp_##stem##_sample(u1, u2))                                         \
-    WARP_WRAP_PDF(p_##tag, smp_##stem##_pdf(w))                                                    \
-    WARP_WRAP_INV(i_##tag, smp_##stem##_invert(w))
-#define WARP_TRIO_PARAM(tag, stem)                                                                 \
-    WARP_WRAP_SAMPLE(s_##tag, smp_##stem##_sample(u1, u2, c->param))                               \
-    WARP_WRAP_PDF(p_##tag, smp_##stem##_pdf(w, c->param))                                          \
-    WARP_WRAP_INV(i_##tag, smp_##stem##_invert(w, c->param))
+/* A case of the catalog row r with the parameters of its test case tc
+ * (tc->cells, tc->lobe_width), prepared into *s, which must outlive the
+ * case. Fails the running test when the parameters do not prepare. */
+warp_case warp_case_of(const cat_row *r, const cat_case *tc, cat_state *s);
 
 /* The chi2_spec of a case (its ctx points to c, which must outlive it). */
 chi2_spec warp_chi2_spec(const warp_case *c);
@@ -156,16 +106,37 @@ typedef struct warp_agreement {
 } warp_agreement;
 warp_agreement warp_compare(const warp_case *a, const warp_case *b, uint64_t n, uint64_t seed);
 
-/* Prints one summary line of a case's results (for the report). */
-void warp_print_summary(const warp_case *c, const chi2_outcome *o, double norm_err, double rt_err);
+/* The checks of one case, each a cmocka test of its own. */
+typedef enum warp_check_kind {
+    WARP_CHECK_CHI2,
+    WARP_CHECK_NORM,
+    WARP_CHECK_DOMAIN,
+    WARP_CHECK_ROUNDTRIP
+} warp_check_kind;
 
-/* Runs every check on cases[0..m) (in parallel over cases): chi-square with
- * n samples, normalization within 1e-6, domain on 10^5 samples plus the
- * edge grid, round trip within 1e-9 on a 64 x 64 grid where an inverse
- * exists. Case i uses the seed mc_rng_derive-hashed from (seed, i). Prints
- * one summary line per case, then fails the running cmocka test listing
- * every failed check (printing the seed). */
-void warp_run_cases(const warp_case *cases, int m, uint64_t n, uint64_t seed);
+/* Runs one check of c and fails the running cmocka test, naming the case
+ * and the seed, when it does not pass: chi-square with n samples,
+ * normalization within WARP_NORM_TOL, domain on 10^5 samples plus the edge
+ * grid, round trip within WARP_RT_TOL on a 64 x 64 grid. seed is the
+ * case's own (warp_case_seed). Prints one line "sampler NAME ...". */
+void warp_check(const warp_case *c, warp_check_kind k, uint64_t n, uint64_t seed);
+
+/* The seed of the case at position seq of a test group of base seed
+ * `seed`: hashed, so that neighbouring cases and base seeds share no
+ * streams. Base seeds pass through mc_test_seed (MC_TEST_SEED). */
+uint64_t warp_case_seed(uint64_t seed, int seq);
+
+/* Appends to tests[*count ..] (at most max in all) one cmocka test per
+ * case and check of every row of the catalog whose family is one of
+ * families[0 .. n_families): chi-square (10^6 samples), normalization,
+ * domain, and round trip where the row has an inverse, named
+ * "CASE: check". The tests' states live as long as the program. */
+void warp_catalog_tests(const char *const *families, int n_families, struct CMUnitTest *tests,
+                        size_t *count, size_t max);
+
+/* Runs every check on cases[0..m), case i with warp_case_seed(seed,
+ * first + i), failing the running test listing every failed check. */
+void warp_run_cases(const warp_case *cases, int m, int first, uint64_t n, uint64_t seed);
 
 /* Tolerances of the brief: normalization and round trip. */
 #define WARP_NORM_TOL 1e-6

@@ -1,0 +1,201 @@
+/* catalog/catalog.h - the sampler catalog: one row per warp of samplers/
+ * and per pdf object of pdf/, with everything a program or a test needs to
+ * know about it.
+ *
+ * A row gives the warp's stable name, its domain and the measure its
+ * density is per unit of, its parameters (key, default, valid range), how
+ * to sample it (from uniforms, or from a generator), its density, its
+ * inverse and support where it has them, the chart in which its goodness
+ * of fit is histogrammed, and the named parameter sets the test suite and
+ * the benchmark run. `warp`, `sphere_plot`, `bench_samplers` and the
+ * sampler tests all iterate this one table, so adding a sampler is adding
+ * a row. Serves chapters 2-3 and 5-10 (every sampler and density of the
+ * book); the layer sits above pdf/ and below the programs.
+ *
+ * Nothing here prints or allocates; errors come back as messages.
+ */
+#ifndef CAT_CATALOG_H
+#define CAT_CATALOG_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "mc/gof.h"
+#include "mc/rng.h"
+#include "pdf/chart.h"
+#include "pdf/pdf.h"
+#include "samplers/discrete.h"
+
+/* At most this many weights for `discrete` and `alias`. */
+#define CAT_MAX_WEIGHTS 256
+/* At most this many parameters per row and named cases per row. */
+#define CAT_MAX_PARAMS 4
+#define CAT_MAX_CASES 5
+
+/* How a point is written and read: a direction as x y z, a planar point as
+ * x y, a real as x, a discrete outcome as its index. */
+typedef enum cat_point { CAT_DIRECTION, CAT_PLANAR, CAT_REAL, CAT_INDEX } cat_point;
+
+/* Every parameter any row takes; a row accepts only its own. */
+typedef struct cat_values {
+    double n;          /* phong exponent */
+    double alpha;      /* ggx roughness */
+    double cos_max;    /* cone */
+    double w;          /* mixture: weight of the cosine pdf */
+    vec3 corner, u, v; /* quad-light and mixture: the parallelogram */
+    vec3 center;       /* sphere-light */
+    double radius;     /* sphere-light */
+    double weights[CAT_MAX_WEIGHTS];
+    size_t n_weights; /* discrete and alias */
+} cat_values;
+
+/* A parameter: a number in a range, a vector x,y,z, or a list of numbers. */
+typedef enum cat_param_kind { CAT_NUMBER, CAT_VECTOR, CAT_LIST } cat_param_kind;
+
+typedef struct cat_param {
+    const char *key;     /* NULL ends a row's list */
+    cat_param_kind kind;
+    size_t offset;       /* of the value in cat_values */
+    const char *def;     /* the default, as written on a command line */
+    double lo, hi;       /* CAT_NUMBER: the valid range ... */
+    bool lo_open, hi_open; /* ... with its open ends */
+} cat_param;
+
+/* How goodness of fit histograms a row's points: x on [lo, hi]; an index
+ * k as k + 1/2 on [0, count]; a planar point as (x, y) on [0, 1]^2; a disc
+ * point as (r^2, phi), where d area = d(r^2) d phi / 2; a direction in a
+ * chart of pdf/chart.h (the state's); or, for a lobe about +z, as
+ * x = theta / (theta + s) and phi over [0, x(pi/2)] x [0, 2 pi], which
+ * spreads a lobe of width about s over many cells. */
+typedef enum cat_chart_kind {
+    CAT_CHART_LINE,
+    CAT_CHART_INDEX,
+    CAT_CHART_XY,
+    CAT_CHART_DISC,
+    CAT_CHART_DIRECTION,
+    CAT_CHART_LOBE
+} cat_chart_kind;
+
+typedef struct cat_state cat_state;
+
+/* A named parameter set the test suite and the benchmark run: the
+ * parameters as on a command line ("n=40", NULL for the defaults), the
+ * test's histogram resolution ({0, 0}: the chart's) and lobe width (0: the
+ * row's chart), and the fixed seed of its checks: the base seed of its
+ * test group and its position there (tests/support/warp_check.h hashes
+ * the two). */
+typedef struct cat_case {
+    const char *name; /* NULL ends a row's list */
+    const char *params;
+    int cells[2];
+    double lobe_width;
+    uint64_t seed;
+    int seq;
+} cat_case;
+
+typedef struct cat_row {
+    const char *name, *domain, *measure;
+    const char *family; /* the samplers/ or pdf/ module, which test program runs its cases */
+    cat_point point;
+    cat_param params[CAT_MAX_PARAMS + 1];
+    /* Builds what the parameters imply (tables, pdf objects, the chart)
+     * after the ranges are checked, or NULL; false with a message. */
+    bool (*prepare)(cat_state *s, char *err, size_t errlen);
+    /* Sampling: `uniforms` (1, 2 or 4) uniforms per point through
+     * sample_u, or, when uniforms is 0, sample_rng. */
+    int uniforms;
+    void (*sample_u)(const cat_state *s, const double *u, double x[3]);
+    void (*sample_rng)(const cat_state *s, mc_rng *rng, double x[3]);
+    /* The density at x per unit of the measure (0 outside the support). */
+    double (*pdf)(const cat_state *s, const double x[3]);
+    /* The (u1, u2) that sample_u maps to x, or NULL. */
+    void (*invert)(const cat_state *s, const double x[3], double u[2]);
+    /* Whether x lies in the support, or NULL for the chart's rectangle
+     * (a direction: cos theta >= its lower end). */
+    bool (*in_support)(const cat_state *s, const double x[3]);
+    /* The density may be exactly 0 on the horizon z = 0 (cosine lobes). */
+    bool rim_zero;
+    cat_chart_kind chart;
+    double lo, hi; /* LINE: the interval; DIRECTION: cos theta from lo about +z by default */
+    cat_case cases[CAT_MAX_CASES + 1];
+} cat_row;
+
+/* What cat_prepare builds. It holds pointers into itself (the mixture's
+ * components, the tables' storage): do not copy it after cat_prepare. */
+struct cat_state {
+    const cat_row *row;
+    cat_values p;
+    pdf cosine, quad, sphere, mixture;
+    const pdf *object; /* the pdf object a pdf row samples */
+    const pdf *parts[2];
+    double mix_weights[2];
+    smp_discrete_cdf cdf;
+    double cdf_storage[CAT_MAX_WEIGHTS];
+    smp_alias alias;
+    smp_alias_cell alias_storage[CAT_MAX_WEIGHTS];
+    cat_chart_kind chart;
+    pdf_chart dir_chart; /* DIRECTION */
+    double lobe_width;   /* LOBE */
+};
+
+/* The number of rows and the i-th (0 <= i < count), in `warp list` order. */
+size_t cat_count(void);
+const cat_row *cat_at(size_t i);
+
+/* The row called `name`, or NULL; the case called `name` of any row, or
+ * NULL (its row in *row). */
+const cat_row *cat_find(const char *name);
+const cat_case *cat_find_case(const char *name, const cat_row **row);
+
+/* The number of coordinates of a point: 3, 2, 1 or 1. */
+int cat_point_dims(const cat_row *r);
+
+/* "key=default ..." into buf, "-" for a row without parameters. */
+void cat_param_defaults(const cat_row *r, char *buf, size_t size);
+
+/* Sets every parameter of *p to the row's defaults. */
+void cat_defaults(const cat_row *r, cat_values *p);
+
+/* Applies one "key=value" assignment (a number, a comma triple, or a comma
+ * list of weights). False with a message in err for an unknown key or a
+ * malformed value. */
+bool cat_set_param(const cat_row *r, cat_values *p, const char *assignment, char *err,
+                   size_t errlen);
+
+/* Checks the parameters against their ranges, then builds *s. False with
+ * a message in err otherwise. */
+bool cat_prepare(const cat_row *r, const cat_values *p, cat_state *s, char *err, size_t errlen);
+
+/* cat_defaults, the case's assignments and cat_prepare in one call. */
+bool cat_prepare_case(const cat_row *r, const cat_case *c, cat_state *s, char *err,
+                      size_t errlen);
+
+/* One sample into x[0..dims) (x[dims..3) are set to 0). */
+void cat_sample(const cat_state *s, mc_rng *rng, double x[3]);
+
+/* The density at x[0..dims) with respect to the row's measure (for an
+ * index, its probability). Directions must be unit length. */
+double cat_pdf(const cat_state *s, const double x[3]);
+
+/* Uses the lobe chart of width `width` (> 0) for a direction row about +z. */
+void cat_use_lobe_chart(cat_state *s, double width);
+
+/* The chart point of x, and the density of the chart's rectangle at a
+ * chart point (the row's density times the chart's Jacobian). */
+void cat_chart_point(const cat_state *s, const double x[3], double out[2]);
+double cat_chart_density(const cat_state *s, const double c[2]);
+
+/* The goodness-of-fit experiment of the state: its chart's rectangle,
+ * `cells` cells ({0, 0}: 50 x 100 for a 2D chart, 120 x 90 for a light's
+ * plane chart; an index has one cell per outcome, a line 100), sampler
+ * and density; ctx is s, which must outlive the spec. */
+mc_gof_spec cat_gof_spec(const cat_state *s, const int cells[2]);
+
+/* The same with a resolution that follows n: coarser cells keep about
+ * CAT_GOF_PER_CELL samples per cell on average when n is small (the full
+ * resolution suits 10^6 samples). */
+#define CAT_GOF_PER_CELL 200.0
+mc_gof_spec cat_gof_spec_for(const cat_state *s, uint64_t n);
+
+#endif /* CAT_CATALOG_H */
