@@ -86,7 +86,9 @@ DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox 
                 fonts-texgyre-math
 
 LAYERS := render pdf samplers mc
-lib_srcs = $(wildcard $(1)/*.c)
+# A layer's archive holds its folder's sources and those of its fast/
+# subfolder (render/fast/: the renderer's vector fast path).
+lib_srcs = $(wildcard $(1)/*.c $(1)/fast/*.c)
 lib_objs = $(patsubst %.c,$(B)/obj/%.o,$(call lib_srcs,$(1)))
 LIBFILES := $(foreach l,$(LAYERS),$(B)/lib/lib$(l).a)
 

@@ -7,7 +7,7 @@
 
 #include "mc/constants.h"
 #include "mc/onb.h"
-#include "render/lights4.h"
+#include "render/fast/lights4.h"
 #include "samplers/hemisphere.h"
 
 _Static_assert(RT_MAX_LIGHTS <= RT_LIGHTS_AT_MAX, "rt_lights_at holds every light of a scene");
