@@ -99,7 +99,7 @@ __attribute__((target("avx2"))) static void prepare_avx2(rt_lights4 *at, const v
             _mm256_storeu_pd(at->num[i], num);
             continue;
         }
-        /* rt_light_cone_axis: axis = center - origin, dist_sq = |axis|^2 */
+        /* pdf_sphere_cone: axis = center - origin, dist_sq = |axis|^2 */
         __m256d vx = _mm256_sub_pd(_mm256_set1_pd(l->center.x), ox),
                 vy = _mm256_sub_pd(_mm256_set1_pd(l->center.y), oy),
                 vz = _mm256_sub_pd(_mm256_set1_pd(l->center.z), oz);
@@ -129,7 +129,7 @@ __attribute__((target("avx2"))) static void prepare_avx2(rt_lights4 *at, const v
     }
 }
 
-/* rt_light_quad_value's s = w . (q x v) and t = w . (u x q) at the point
+/* pdf_quad_density's s = w . (q x v) and t = w . (u x q) at the point
  * q = (origin + r d) - corner of the quad's plane. */
 __attribute__((target("avx2"))) static inline void quad_st(const rt_light *l, __m256d ox,
                                                            __m256d oy, __m256d oz, __m256d dx,
@@ -168,7 +168,7 @@ AVX2_INLINE __m256d cone_dot(const rt_lights4 *at, int i, __m256d dx, __m256d dy
                 _mm256_loadu_pd(at->az[i]));
 }
 
-/* rt_light_quad_value's distance r = num / denom along d, denom = normal . d. */
+/* pdf_quad_density's distance r = num / denom along d, denom = normal . d. */
 AVX2_INLINE __m256d quad_r(const rt_lights4 *at, int i, __m256d dx, __m256d dy, __m256d dz,
                            __m256d *denom)
 {
@@ -197,7 +197,7 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
             sum = _mm256_add_pd(sum, _mm256_andnot_pd(off, _mm256_loadu_pd(at->cone[i])));
             continue;
         }
-        /* rt_light_quad_value: denom = normal . d, r = num / denom */
+        /* pdf_quad_density: denom = normal . d, r = num / denom */
         __m256d denom, r = quad_r(at, i, dx, dy, dz, &denom);
         __m256d s, t;
         quad_st(l, ox, oy, oz, dx, dy, dz, r, &s, &t);
@@ -219,7 +219,7 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
 #endif
 
 void rt_lights4_prepare(rt_isa isa, rt_lights4 *at, const rt_light *lights, int n,
-                            const vec3 origin[RT_LANES])
+                        const vec3 origin[RT_LANES])
 {
     at->lights = lights;
     at->n = n;
@@ -240,7 +240,7 @@ void rt_lights4_prepare(rt_isa isa, rt_lights4 *at, const rt_light *lights, int 
 
 /* BEGIN SNIPPET lights4_value */
 void rt_lights4_value(rt_isa isa, const rt_lights4 *at, const vec3 d[RT_LANES],
-                          double out[RT_LANES])
+                      double out[RT_LANES])
 {
 #if defined(__x86_64__) && defined(__GNUC__)
     if (isa == RT_ISA_AVX2) {
