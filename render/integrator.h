@@ -48,9 +48,10 @@ typedef struct rt_path_settings {
      * by is multiplied by this (1 for a correct renderer); the sampling is
      * unchanged, so any other value makes the image wrong. */
     double light_pdf_scale;
-    /* Evaluate the densities with pdf objects built at every bounce, as
-     * the book does (pdf/pdf.h), instead of render/lights.h. Both give the
-     * same numbers; the objects are the reference, the default is faster. */
+    /* Build the light list's pdf objects at every bounce, as the book does
+     * (pdf/pdf.h), instead of render/lights.h's cached constants. Both give
+     * the same numbers; the objects are the reference, the default is
+     * faster. */
     bool pdf_objects;
 } rt_path_settings;
 
