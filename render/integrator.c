@@ -189,10 +189,7 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
     }
     if (v->sr.specular) {
         p->beta = vec3_mul(p->beta, v->sr.attenuation);
-        /* Field by field: the material has just stored the ray as two
-         * vec3s (a 16- and an 8-byte store each), and a whole-struct copy
-         * loads it in 16-byte pieces, two of which straddle those stores
-         * and so wait for them to retire instead of being forwarded. */
+        /* Field by field, not as one struct (docs/performance.md). */
         p->ray.origin = v->sr.ray.origin;
         p->ray.dir = v->sr.ray.dir;
         path_next(ps, p, rng);

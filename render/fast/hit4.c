@@ -126,6 +126,10 @@ void rt_leaf_lanes_destroy(rt_leaf_lanes *b4)
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
+/* Hand-written AVX2: with the rays traced one by one instead (the
+ * portable path), make bench's book render took 20-45% longer
+ * (docs/performance.md), far above the 5% that a second copy of the
+ * quad and sphere tests must pay for. */
 #include <immintrin.h>
 
 /* Exactness. Every lane computes rt_quad_hit_distance's and

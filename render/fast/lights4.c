@@ -51,11 +51,14 @@ vec3 rt_lights4_generate(const rt_lights4 *at, int k, mc_rng *rng)
 
 /* The list's average sum / n. For n a power of two, 1 / n is exact and
  * sum * (1 / n) is the correctly rounded sum / n as the quotient is: the
- * same bits for a multiplication instead of a division (on the path from
- * the direction to the throughput, 13 cycles of latency become 3). */
+ * same bits for a multiplication instead of a division. */
 static bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 #if defined(__x86_64__) && defined(__GNUC__)
+/* Hand-written AVX2: with render/lights.h lane by lane instead (the
+ * portable path), make bench's book render took 35% longer
+ * (docs/performance.md), far above the 5% that a vector copy of the
+ * densities must pay for. */
 #include <immintrin.h>
 
 #define AVX2_INLINE __attribute__((target("avx2"), always_inline)) static inline
