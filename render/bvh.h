@@ -11,7 +11,8 @@
  * A leaf tests its primitives one after the other, keeping the nearest by
  * selects. A small scene's tree is a single leaf (the Cornell box: twelve
  * quads and a sphere); the fast path (render/fast/hit4.h) tests such a
- * leaf against four rays at once.
+ * leaf against four rays at once, and one ray against four of its quads
+ * at once.
  * Serves the renderer of chapters 4-10 of "Ray Tracing: The Rest of Your
  * Life"; the book itself uses the BVH of its second volume.
  */

@@ -37,6 +37,7 @@ struct rt_scene {
     int n_prims, cap_prims;
     rt_bvh bvh;
     rt_leaf_lanes *lanes; /* the root leaf for the fast path, NULL if none */
+    rt_isa isa;           /* rt_isa_best(), for rt_scene_hit */
     rt_prim lights[RT_MAX_LIGHTS];
     rt_light fast_lights[RT_MAX_LIGHTS];
     int n_lights;
@@ -309,9 +310,10 @@ int rt_scene_build(rt_scene *s)
         rt_bvh_build(&s->bvh, s->prims, s->n_prims) != 0)
         return -1;
     /* A tree that is one leaf (a small scene) is also laid out for the
-     * fast path's four-ray test. */
+     * fast path's four-ray and one-ray tests. */
     if (s->bvh.nodes[0].count > 0 && !(s->lanes = rt_leaf_lanes_create(s->prims, s->n_prims)))
         return -1;
+    s->isa = rt_isa_best();
     s->built = true;
     return 0;
 }
@@ -320,7 +322,7 @@ int rt_scene_build(rt_scene *s)
 
 bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
 {
-    return rt_bvh_hit(&s->bvh, s->prims, &r, s->t_min, tmax, h);
+    return rt_leaf_lanes_hit1(s->isa, s->lanes, &s->bvh, s->prims, &r, s->t_min, tmax, h);
 }
 
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)

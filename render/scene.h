@@ -88,7 +88,9 @@ void rt_scene_set_background(rt_scene *s, vec3 radiance);
  * after every object was added and before any query. */
 int rt_scene_build(rt_scene *s);
 
-/* The closest hit of r with t in (t_min, tmax), through the BVH. */
+/* The closest hit of r with t in (t_min, tmax), through the BVH: for a
+ * root leaf, the fast path's one-ray test (rt_leaf_lanes_hit1, with the
+ * instruction set of rt_isa_best), the same bits as the reference. */
 bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
 
 /* The same by testing every flattened primitive (reference). */

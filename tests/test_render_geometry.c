@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "mc/constants.h"
 #include "mc/rng.h"
@@ -331,6 +332,128 @@ static void test_bvh_matches_brute_force(void **state)
     rt_scene_destroy(s);
 }
 
+/* Whether two hit records hold the same bits (t, point and normal
+ * compared as bits, so that -0 and +0 differ). */
+static bool same_hit(const rt_hit *a, const rt_hit *b)
+{
+    double x[7] = {a->t, a->p.x, a->p.y, a->p.z, a->normal.x, a->normal.y, a->normal.z};
+    double y[7] = {b->t, b->p.x, b->p.y, b->p.z, b->normal.x, b->normal.y, b->normal.z};
+    return memcmp(x, y, sizeof x) == 0 && a->front_face == b->front_face &&
+           a->material == b->material && a->prim == b->prim;
+}
+
+/* rt_leaf_lanes_hit1 with instruction set isa (rt_scene_hit, the
+ * renderer's entry, for RT_ISA_COUNT) against rt_bvh_hit on n_rays rays,
+ * one in eight along axes or axis planes: the same hit or miss and the
+ * same record bit for bit, the primitive included. A ray in sixteen has
+ * tmin 0 or -50 and one in sixteen a finite tmax (not through
+ * rt_scene_hit, whose range is the scene's). Returns the hits. */
+static int check_hit1_isa(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t seed, int isa)
+{
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    const rt_prim *prims = rt_scene_prims(s);
+    const rt_bvh *b = rt_scene_bvh(s);
+    int hits = 0;
+    for (int i = 0; i < n_rays; i++) {
+        rt_ray r = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
+        double tmin = 1e-3, tmax = HUGE_VAL;
+        if (isa != RT_ISA_COUNT && i % 16 == 3)
+            tmin = i % 32 == 3 ? 0.0 : -50.0;
+        if (isa != RT_ISA_COUNT && i % 16 == 5)
+            tmax = 300.0 * mc_rng_uniform(&rng);
+        rt_hit h1, h = {0};
+        bool hit = isa == RT_ISA_COUNT
+                       ? rt_scene_hit(s, r, HUGE_VAL, &h1)
+                       : rt_leaf_lanes_hit1((rt_isa)isa, rt_scene_leaf_lanes(s), b, prims, &r, tmin,
+                                            tmax, &h1);
+        const char *name = isa == RT_ISA_COUNT ? "rt_scene_hit" : rt_isa_name((rt_isa)isa);
+        if (hit != rt_bvh_hit(b, prims, &r, tmin, tmax, &h))
+            fail_msg("ray %d (%s): hit1 says %d, rt_bvh_hit %d", i, name, hit, !hit);
+        if (hit && !same_hit(&h1, &h))
+            fail_msg("ray %d (%s): t %.17g prim %d against t %.17g prim %d", i, name, h1.t, h1.prim,
+                     h.t, h.prim);
+        hits += hit;
+    }
+    return hits;
+}
+
+/* check_hit1_isa through rt_scene_hit and with every instruction set the
+ * processor has. */
+static int check_hit1(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t seed)
+{
+    int hits = check_hit1_isa(s, n_rays, lo, hi, seed, RT_ISA_COUNT);
+    for (int isa = 0; isa < RT_ISA_COUNT; isa++)
+        if (rt_isa_available((rt_isa)isa))
+            check_hit1_isa(s, n_rays, lo, hi, seed + 100u, isa);
+    return hits;
+}
+
+/* The one-ray test of the root leaf against the reference: the book scene
+ * (2.5 x 10^5 rays from all around and inside it, 5 x 10^4 from its
+ * walls), the leaf with a quad of every layout (five quads: a packet and
+ * a part of one), and a leaf of exact ties (a quad and a sphere each
+ * twice, the copies apart in prims), where the first of the primitives at
+ * the nearest distance must be the one reported. */
+static void test_bvh_hit1_matches_hit(void **state)
+{
+    (void)state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    assert_non_null(rt_scene_leaf_lanes(s));
+    int hits = check_hit1(s, 250000, v3(-100, -100, -900), v3(655, 655, 655), 22u);
+    int wall_hits = check_hit1(s, 50000, v3(0, 0, 0), v3(555, 555, 555), 23u);
+    printf("rt_leaf_lanes_hit1 = rt_bvh_hit on 3 x 10^5 rays through the book's room (%d + %d hits)\n",
+           hits, wall_hits);
+    assert_true(hits > 50000 && wall_hits > 40000);
+    rt_scene_destroy(s);
+    s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    rt_scene_add(s, rt_scene_quad(s, v3(0, 0, 0), v3(100, 0, 0), v3(0, 0, 100), m));
+    rt_scene_add(s, rt_scene_quad(s, v3(10, 10, 10), v3(20, 0, 0), v3(0, 30, 40), m));
+    rt_scene_add(s, rt_scene_quad(s, v3(20, 50, 30), v3(20, 15, 0), v3(0, 0, 25), m));
+    rt_scene_add(s, rt_scene_quad(s, v3(50, 20, 80), v3(30, 10, 0), v3(-10, 25, 0), m));
+    rt_scene_add(s, rt_scene_quad(s, v3(30, 30, 30), v3(10, 20, 30), v3(-20, 10, 5), m));
+    rt_scene_add(s, rt_scene_sphere(s, v3(60, 60, 60), 15.0, m));
+    rt_scene_add(s, rt_scene_flip(s, rt_scene_sphere(s, v3(50, 50, 50), 200.0, m)));
+    assert_int_equal(rt_scene_build(s), 0);
+    assert_int_equal(rt_scene_leaf_lanes(s)->n_packets, 2);
+    wall_hits = check_hit1(s, 40000, v3(-20, -20, -20), v3(120, 120, 120), 24u);
+    assert_true(wall_hits == 40000); /* the inward sphere catches every ray */
+    rt_scene_destroy(s);
+    s = rt_scene_create();
+    m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    int m2 = rt_scene_add_material(s, rt_lambertian(v3(0.25, 0.5, 0.75)));
+    rt_object q = rt_scene_quad(s, v3(0, 0, 50), v3(100, 0, 0), v3(0, 100, 0), m);
+    rt_object q2 = rt_scene_quad(s, v3(0, 0, 50), v3(100, 0, 0), v3(0, 100, 0), m2);
+    rt_object ball = rt_scene_sphere(s, v3(50, 50, 45), 5.0, m2), ball2 = rt_scene_sphere(s, v3(50, 50, 45), 5.0, m);
+    /* Between them quads as wide as the room's (so that the SAH keeps
+     * one leaf): in prims ball 0, q 2, ball2 4, q2 6, eight quads, q
+     * the second and q2 the fifth, so that q2 is in a lower lane than q
+     * if the quads went to lanes in turn. */
+    rt_object items[] = {ball, -1, q, -1, ball2, -1, q2, -1, -1, -1};
+    for (int i = 0, z = 51; i < 10; i++)
+        rt_scene_add(s, items[i] >= 0 ? items[i]
+                                      : rt_scene_quad(s, v3(0, 0, z++), v3(100, 0, 0), v3(0, 100, 0), m));
+    assert_int_equal(rt_scene_build(s), 0);
+    assert_non_null(rt_scene_leaf_lanes(s));
+    hits = check_hit1(s, 40000, v3(0, 0, -20), v3(100, 100, 120), 25u);
+    /* Every hit on a copy is a tie, won by the first: ball and q, never
+     * ball2 or q2. */
+    mc_rng rng = mc_rng_derive(26u, 0u);
+    int ties = 0;
+    for (int i = 0; i < 10000; i++) {
+        rt_hit h;
+        if (!rt_scene_hit(s, random_ray(&rng, v3(0, 0, -20), v3(100, 100, 120)), HUGE_VAL, &h))
+            continue;
+        assert_true(h.prim != 4 && h.prim != 6);
+        ties += h.prim == 0 || h.prim == 2;
+    }
+    printf("rt_leaf_lanes_hit1 = rt_bvh_hit on 8 x 10^4 rays through two leaves (%d + %d hits; "
+           "%d ties in 10^4 rays)\n", wall_hits, hits, ties);
+    assert_true(hits > 5000 && ties > 1000);
+    rt_scene_destroy(s);
+}
+
 /* Coincident centroids and a long chain of nested boxes must still give a
  * tree within the fixed traversal stack. */
 static void test_bvh_degenerate_inputs(void **state)
@@ -400,6 +523,7 @@ int main(void)
         cmocka_unit_test(test_bvh_matches_brute_force),
         cmocka_unit_test(test_bvh_hit4_matches_hit),
         cmocka_unit_test(test_bvh_hit4_quad_kinds),
+        cmocka_unit_test(test_bvh_hit1_matches_hit),
         cmocka_unit_test(test_bvh_degenerate_inputs),
         cmocka_unit_test(test_camera_geometry),
         cmocka_unit_test(test_scene_errors),

@@ -33,6 +33,15 @@ static int turned_axis(const double n[3], const double ea[3], const double eb[3]
 
 #define EACH_LANE for (int l = 0; l < RT_LANES; l++)
 
+/* The thirteen numbers of rt_quad_hit_distance in rt_quad_lanes's order:
+ * normal, plane, corner, ea, eb. */
+static void quad_fields(const rt_quad *s, double f[13])
+{
+    const double v[13] = {s->normal.x, s->normal.y, s->normal.z, s->plane, s->q.x, s->q.y, s->q.z,
+                          s->ea.x, s->ea.y, s->ea.z, s->eb.x, s->eb.y, s->eb.z};
+    memcpy(f, v, sizeof v);
+}
+
 /* Appends quad s (prims[prim]) to the layout of its kind. The edge test
  * is symmetric in a and b, so a turned quad may swap them. */
 static void lay_out_quad(rt_leaf_lanes *b4, const rt_quad *s, int64_t prim)
@@ -62,14 +71,38 @@ static void lay_out_quad(rt_leaf_lanes *b4, const rt_quad *s, int64_t prim)
               w->qj[l] = o[tj], w->qk[l] = o[kk], w->ai[l] = a[i], w->ak[l] = a[kk], w->bj[l] = b[tj],
               w->prim[l] = prim;
     } else {
-        const double f[13] = {n[0], n[1], n[2], s->plane, o[0], o[1], o[2],
-                              ea[0], ea[1], ea[2], eb[0], eb[1], eb[2]};
+        double f[13];
+        quad_fields(s, f);
         rt_quad_lanes *w = &b4->other[b4->n_other++];
         EACH_LANE {
             for (int g = 0; g < 13; g++)
                 w->f[g][l] = f[g];
             w->prim[l] = prim;
         }
+    }
+}
+
+/* The packets of the one-ray test (hit4.h): quad number c of the leaf
+ * (c-th in prims) goes to lane c / n_packets of row c % n_packets. */
+static void pack_quads(rt_leaf_lanes *b4, const rt_prim *prims, int n)
+{
+    int nq = 0;
+    for (int i = 0; i < n; i++)
+        nq += prims[i].kind == RT_PRIM_QUAD;
+    b4->n_packets = (nq + RT_LANES - 1) / RT_LANES;
+    memset(b4->packets, 0, (size_t)b4->n_packets * sizeof *b4->packets);
+    for (int p = 0; p < b4->n_packets; p++)
+        EACH_LANE b4->packets[p].prim[l] = -1;
+    for (int i = 0, c = 0; i < n; i++) {
+        if (prims[i].kind != RT_PRIM_QUAD)
+            continue;
+        double f[13];
+        quad_fields(&prims[i].as.quad, f);
+        rt_quad_lanes *w = &b4->packets[c % b4->n_packets];
+        int l = c++ / b4->n_packets;
+        for (int g = 0; g < 13; g++)
+            w->f[g][l] = f[g];
+        w->prim[l] = i;
     }
 }
 
@@ -89,13 +122,16 @@ rt_leaf_lanes *rt_leaf_lanes_create(const rt_prim *prims, int n)
     b4->other = aligned_alloc(64, nq * sizeof *b4->other);
     b4->spheres = malloc(nq * sizeof *b4->spheres);
     b4->rows = aligned_alloc(64, rows * sizeof *b4->rows);
-    if (!b4->axis || !b4->turned || !b4->flat || !b4->other || !b4->spheres || !b4->rows) {
+    b4->packets = aligned_alloc(64, nq * sizeof *b4->packets);
+    if (!b4->axis || !b4->turned || !b4->flat || !b4->other || !b4->spheres || !b4->rows ||
+        !b4->packets) {
         rt_leaf_lanes_destroy(b4);
         return NULL;
     }
     memset(b4->axis, 0, nq * sizeof *b4->axis);
     memset(b4->turned, 0, nq * sizeof *b4->turned);
     memset(b4->flat, 0, nq * sizeof *b4->flat);
+    pack_quads(b4, prims, n);
     for (int i = 0; i < n; i++) {
         if (prims[i].kind == RT_PRIM_QUAD) {
             const rt_quad *s = &prims[i].as.quad;
@@ -122,6 +158,7 @@ void rt_leaf_lanes_destroy(rt_leaf_lanes *b4)
     free(b4->other);
     free(b4->spheres);
     free(b4->rows);
+    free(b4->packets);
     free(b4);
 }
 
@@ -385,6 +422,47 @@ __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_leaf_lanes *b
     return records(b4, prims, &L, nb, h);
 }
 /* END SNIPPET hit4_avx2 */
+
+/* BEGIN SNIPPET hit1_avx2 */
+/* One ray against the root leaf: the ray in every lane, four quads in
+ * each packet (quad_other: the full test, valid for any tmin), each lane
+ * keeping its nearest; then the nearest lane, then the spheres. Every
+ * quad of a lane comes before those of the next lane (hit4.h) and a lane
+ * keeps the first of equal distances, so the lowest lane holding the
+ * minimum holds the first quad at that distance, as in rt_bvh_hit; a
+ * sphere wins a tie only from a later primitive. */
+__attribute__((target("avx2"))) static bool hit1_avx2(const rt_leaf_lanes *b4, const rt_prim *prims,
+                                                     const rt_ray *r, double tmin, double tmax,
+                                                     rt_hit *h)
+{
+    lanes L = {{_mm256_set1_pd(r->origin.x), _mm256_set1_pd(r->origin.y), _mm256_set1_pd(r->origin.z)},
+               {_mm256_set1_pd(r->dir.x), _mm256_set1_pd(r->dir.y), _mm256_set1_pd(r->dir.z)}};
+    const __m256d lo = _mm256_set1_pd(tmin);
+    nearest nb = {_mm256_set1_pd(tmax), _mm256_castsi256_pd(_mm256_set1_epi64x(-1))};
+    QUADS(n_packets, packets, quad_other, inside, keep)
+    __m256d m2 = _mm256_min_pd(nb.t, _mm256_permute_pd(nb.t, 0x5));
+    __m256d m4 = _mm256_min_pd(m2, _mm256_permute2f128_pd(m2, m2, 0x1));
+    /* No quad hit: every lane holds tmax and -1. */
+    unsigned eq = (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(nb.t, m4, _CMP_EQ_OQ));
+    int64_t is[RT_LANES];
+    _mm256_storeu_si256((__m256i *)(void *)is, _mm256_castpd_si256(nb.i));
+    double best = _mm256_cvtsd_f64(m4);
+    int best_i = (int)is[__builtin_ctz(eq | 0x10u) & 3];
+    for (int j = 0; j < b4->n_spheres; j++) {
+        int i = b4->spheres[j];
+        __m256d disc, t4 = sphere(&L, &prims[i].as.sphere, lo, &disc);
+        double t = _mm256_cvtsd_f64(t4);
+        int closer = (_mm256_cvtsd_f64(disc) >= 0.0) & (t > tmin) &
+                     ((t < best) | ((t == best) & (i < best_i)));
+        best_i = closer ? i : best_i;
+        best = closer ? t : best;
+    }
+    if (best_i < 0)
+        return false;
+    rt_prim_hit_record(&prims[best_i], best_i, *r, best, h);
+    return true;
+}
+/* END SNIPPET hit1_avx2 */
 #endif
 
 /* BEGIN SNIPPET hit4_dispatch */
@@ -406,6 +484,20 @@ unsigned rt_leaf_lanes_hit(rt_isa isa, const rt_leaf_lanes *ll, const rt_bvh *bv
     return mask;
 }
 /* END SNIPPET hit4_dispatch */
+
+bool rt_leaf_lanes_hit1(rt_isa isa, const rt_leaf_lanes *ll, const rt_bvh *bvh,
+                        const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
+                        rt_hit *h)
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (ll && isa == RT_ISA_AVX2)
+        return hit1_avx2(ll, prims, r, tmin, tmax, h);
+#else
+    (void)isa;
+    (void)ll;
+#endif
+    return rt_bvh_hit(bvh, prims, r, tmin, tmax, h);
+}
 
 unsigned rt_scene_hit4(const rt_scene *s, rt_isa isa, const rt_ray r[RT_LANES], double tmax,
                        rt_hit h[RT_LANES])

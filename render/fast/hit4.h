@@ -1,4 +1,5 @@
-/* render/fast/hit4.h - a root leaf against four rays at once.
+/* render/fast/hit4.h - a root leaf against four rays at once, and one
+ * ray against four of its quads at once.
  *
  * A small scene (the Cornell box of chapters 4-10 of "Ray Tracing: The Rest
  * of Your Life": twelve quads and a sphere) is a single BVH leaf. Its quads
@@ -10,7 +11,9 @@
  * of a box turned about the vertical have a zero y in the normal.
  * rt_quad_hit_distance's dot products then reduce exactly to fewer terms
  * (hit4.c says why the results are the same bits), and each kind has its
- * own layout.
+ * own layout. A ray traced alone (a shadow ray, a path of the light and
+ * mis strategies) is tested against four quads at once instead, one quad
+ * per lane.
  */
 #ifndef RT_FAST_HIT4_H
 #define RT_FAST_HIT4_H
@@ -65,7 +68,11 @@ typedef struct rt_quad_lanes {
 /* The root leaf laid out in lanes: its quads by kind, tested in this
  * order (axis, turned, flat, other), then its spheres; and for the hit
  * records, one row per primitive of the leaf: a quad's normal and 0, or a
- * sphere's centre and orient (+-1). */
+ * sphere's centre and orient (+-1). For the one-ray test, the quads again
+ * in n_packets rows of rt_quad_lanes, four quads to a row: lane l of row
+ * p holds the (l n_packets + p)-th quad in the order of prims, so that
+ * every quad of a lane comes before those of the next lane; a lane left
+ * over is all zeros, with prim -1. */
 typedef struct rt_leaf_lanes {
     rt_quad_axis *axis;
     rt_quad_turned *turned;
@@ -74,6 +81,8 @@ typedef struct rt_leaf_lanes {
     int *spheres;       /* indices into prims */
     int n_axis, n_turned, n_flat, n_other, n_spheres;
     double (*rows)[4];
+    rt_quad_lanes *packets;
+    int n_packets;
 } rt_leaf_lanes;
 
 /* The layout of the leaf prims[0..n), or NULL when out of memory. */
@@ -94,6 +103,16 @@ void rt_leaf_lanes_destroy(rt_leaf_lanes *ll);
 unsigned rt_leaf_lanes_hit(rt_isa isa, const rt_leaf_lanes *ll, const rt_bvh *bvh,
                            const rt_prim *prims, const rt_ray r[RT_LANES], double tmin,
                            double tmax, rt_hit h[RT_LANES]);
+
+/* rt_bvh_hit for one ray r: the same answer, the distance and hit record
+ * bit for bit, and on an exact tie the same primitive (the first in
+ * prims). With RT_ISA_AVX2 (which the processor must have) and a leaf
+ * layout ll (may be NULL), r is tested against the four quads of each of
+ * ll's packets in vector lanes, then against the spheres; otherwise this
+ * is rt_bvh_hit. */
+bool rt_leaf_lanes_hit1(rt_isa isa, const rt_leaf_lanes *ll, const rt_bvh *bvh,
+                        const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
+                        rt_hit *h);
 
 /* rt_scene_hit for RT_LANES rays at once, through rt_leaf_lanes_hit: bit
  * k of the result says whether r[k] hit, and then h[k] is its record. */

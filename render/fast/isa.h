@@ -2,7 +2,8 @@
  *
  * The fast path (render/fast/) traces four paths of a row together
  * (chapter 12 of the book, "Speed"): the four-ray hit of a root leaf
- * (hit4.h) and the light densities at four hit points (lights4.h). Each
+ * (hit4.h) and the light densities at four hit points (lights4.h); and
+ * it tests a ray traced alone against four quads at once (hit4.h). Each
  * has a portable form, which is the reference renderer lane by lane, and
  * an AVX2 form that computes the same bits; this is the one place that
  * says which of them runs. docs/performance.md gives the measurements
