@@ -274,11 +274,10 @@ static void test_bvh_hit4_matches_hit(void **state)
 
 /* A root leaf with a quad of every layout of render/fast/hit4.h:
  * axis-aligned, turned about x (its ea along x: a and b swapped) and
- * about z, flat in a z plane, in general position; a sphere and an inward one around it all.
- * 2 x 10^4 batches through the public entry and each instruction set. */
-static void test_bvh_hit4_quad_kinds(void **state)
+ * about z, flat in a z plane, in general position; a sphere and an inward
+ * one around it all. */
+static rt_scene *quad_kinds_scene(void)
 {
-    (void)state;
     rt_scene *s = rt_scene_create();
     int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
     rt_scene_add(s, rt_scene_quad(s, v3(0, 0, 0), v3(100, 0, 0), v3(0, 0, 100), m));
@@ -289,6 +288,15 @@ static void test_bvh_hit4_quad_kinds(void **state)
     rt_scene_add(s, rt_scene_sphere(s, v3(60, 60, 60), 15.0, m));
     rt_scene_add(s, rt_scene_flip(s, rt_scene_sphere(s, v3(50, 50, 50), 200.0, m)));
     assert_int_equal(rt_scene_build(s), 0);
+    return s;
+}
+
+/* quad_kinds_scene with 2 x 10^4 batches through the public entry and
+ * each instruction set. */
+static void test_bvh_hit4_quad_kinds(void **state)
+{
+    (void)state;
+    rt_scene *s = quad_kinds_scene();
     const rt_leaf_lanes *b4 = rt_scene_leaf_lanes(s);
     assert_non_null(b4);
     assert_int_equal(b4->n_axis, 1);
@@ -350,9 +358,10 @@ static bool same_hit(const rt_hit *a, const rt_hit *b)
  * rt_scene_hit, whose range is the scene's). Returns the hits. */
 static int check_hit1_isa(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t seed, int isa)
 {
-    mc_rng rng = mc_rng_derive(seed, 0u);
-    const rt_prim *prims = rt_scene_prims(s);
+    const char *name = isa == RT_ISA_COUNT ? "rt_scene_hit" : rt_isa_name((rt_isa)isa);
     const rt_bvh *b = rt_scene_bvh(s);
+    const rt_prim *prims = rt_scene_prims(s);
+    mc_rng rng = mc_rng_derive(seed, 0u);
     int hits = 0;
     for (int i = 0; i < n_rays; i++) {
         rt_ray r = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
@@ -366,7 +375,6 @@ static int check_hit1_isa(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint6
                        ? rt_scene_hit(s, r, HUGE_VAL, &h1)
                        : rt_leaf_lanes_hit1((rt_isa)isa, rt_scene_leaf_lanes(s), b, prims, &r, tmin,
                                             tmax, &h1);
-        const char *name = isa == RT_ISA_COUNT ? "rt_scene_hit" : rt_isa_name((rt_isa)isa);
         if (hit != rt_bvh_hit(b, prims, &r, tmin, tmax, &h))
             fail_msg("ray %d (%s): hit1 says %d, rt_bvh_hit %d", i, name, hit, !hit);
         if (hit && !same_hit(&h1, &h))
@@ -406,22 +414,13 @@ static void test_bvh_hit1_matches_hit(void **state)
            hits, wall_hits);
     assert_true(hits > 50000 && wall_hits > 40000);
     rt_scene_destroy(s);
-    s = rt_scene_create();
-    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
-    rt_scene_add(s, rt_scene_quad(s, v3(0, 0, 0), v3(100, 0, 0), v3(0, 0, 100), m));
-    rt_scene_add(s, rt_scene_quad(s, v3(10, 10, 10), v3(20, 0, 0), v3(0, 30, 40), m));
-    rt_scene_add(s, rt_scene_quad(s, v3(20, 50, 30), v3(20, 15, 0), v3(0, 0, 25), m));
-    rt_scene_add(s, rt_scene_quad(s, v3(50, 20, 80), v3(30, 10, 0), v3(-10, 25, 0), m));
-    rt_scene_add(s, rt_scene_quad(s, v3(30, 30, 30), v3(10, 20, 30), v3(-20, 10, 5), m));
-    rt_scene_add(s, rt_scene_sphere(s, v3(60, 60, 60), 15.0, m));
-    rt_scene_add(s, rt_scene_flip(s, rt_scene_sphere(s, v3(50, 50, 50), 200.0, m)));
-    assert_int_equal(rt_scene_build(s), 0);
+    s = quad_kinds_scene();
     assert_int_equal(rt_scene_leaf_lanes(s)->n_packets, 2);
     wall_hits = check_hit1(s, 40000, v3(-20, -20, -20), v3(120, 120, 120), 24u);
     assert_true(wall_hits == 40000); /* the inward sphere catches every ray */
     rt_scene_destroy(s);
     s = rt_scene_create();
-    m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
     int m2 = rt_scene_add_material(s, rt_lambertian(v3(0.25, 0.5, 0.75)));
     rt_object q = rt_scene_quad(s, v3(0, 0, 50), v3(100, 0, 0), v3(0, 100, 0), m);
     rt_object q2 = rt_scene_quad(s, v3(0, 0, 50), v3(100, 0, 0), v3(0, 100, 0), m2);
