@@ -21,7 +21,7 @@ DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox 
 # and below the programs; it does not use render/.
 LAYERS := catalog render pdf samplers mc
 # A layer's archive holds its folder's sources and those of its fast/
-# subfolder, if it has one.
+# subfolder (render/fast/: the renderer's vector fast path).
 lib_srcs = $(wildcard $(1)/*.c $(1)/fast/*.c)
 lib_objs = $(patsubst %.c,$(B)/obj/%.o,$(call lib_srcs,$(1)))
 LIBFILES := $(foreach l,$(LAYERS),$(B)/lib/lib$(l).a)

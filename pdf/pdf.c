@@ -34,32 +34,23 @@ pdf pdf_cosine(vec3 normal)
 pdf pdf_toward_quad(vec3 origin, vec3 corner, vec3 u, vec3 v)
 {
     pdf p = {.kind = PDF_TOWARD_QUAD};
-    vec3 n = vec3_cross(u, v);
-    double len_sq = vec3_length_sq(n);
     p.as.quad.origin = origin;
     p.as.quad.corner = corner;
     p.as.quad.u = u;
     p.as.quad.v = v;
-    /* A degenerate parallelogram keeps zero vectors and a zero density
-     * rather than dividing by zero; pdf_valid reports it. */
-    p.as.quad.normal = len_sq > 0.0 ? vec3_scale(n, 1.0 / sqrt(len_sq)) : n;
-    p.as.quad.w = len_sq > 0.0 ? vec3_scale(n, 1.0 / len_sq) : n;
-    p.as.quad.inv_area = len_sq > 0.0 ? 1.0 / sqrt(len_sq) : 0.0;
+    /* pdf_valid reports a degenerate parallelogram. */
+    pdf_quad_constants(u, v, &p.as.quad.normal, &p.as.quad.w, &p.as.quad.inv_area);
     return p;
 }
 
 pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius)
 {
     pdf p = {.kind = PDF_TOWARD_SPHERE};
-    vec3 axis = vec3_sub(center, origin);
-    double dist_sq = vec3_length_sq(axis);
     p.as.sphere.origin = origin;
     p.as.sphere.center = center;
     p.as.sphere.radius = radius;
-    /* At the centre any axis will do: the cone is then the whole sphere. */
-    p.as.sphere.frame = onb_from_w(dist_sq > 0.0 ? vec3_scale(axis, 1.0 / sqrt(dist_sq))
-                                                 : vec3_make(0.0, 0.0, 1.0));
-    p.as.sphere.one_minus_cos = smp_sphere_cone_cap(dist_sq, radius, &p.as.sphere.cos_theta_max);
+    p.as.sphere.frame = onb_from_w(pdf_sphere_cone(origin, center, radius, &p.as.sphere.cos_theta_max,
+                                                   &p.as.sphere.one_minus_cos));
     return p;
 }
 
@@ -80,69 +71,41 @@ pdf pdf_list(const pdf *const *items, size_t n)
     return p;
 }
 
-/* BEGIN SNIPPET toward_quad */
-/* Where the ray origin + r d (r > 0) meets the parallelogram: the density
- * 1 / A per unit area becomes dist^2 / (|cos| A) per unit solid angle,
- * because a patch dA at distance dist, tilted by the angle whose cosine is
- * cos, subtends d omega = |cos| dA / dist^2 (chapter 7). */
 static double quad_value(const pdf *p, vec3 d)
 {
-    double denom = vec3_dot(p->as.quad.normal, d);
-    if (denom == 0.0)
-        return 0.0;
-    double r = vec3_dot(p->as.quad.normal, vec3_sub(p->as.quad.corner, p->as.quad.origin)) / denom;
-    if (!(r > 0.0))
-        return 0.0;
-    vec3 q = vec3_sub(vec3_madd(p->as.quad.origin, d, r), p->as.quad.corner);
-    /* With q = s u + t v and w = (u x v) / |u x v|^2: q x v = s (u x v) and
-     * u x q = t (u x v), so dotting with w isolates s and t. */
-    double s = vec3_dot(p->as.quad.w, vec3_cross(q, p->as.quad.v));
-    double t = vec3_dot(p->as.quad.w, vec3_cross(p->as.quad.u, q));
-    if (!(s >= -PDF_QUAD_EDGE_TOL && s <= 1.0 + PDF_QUAD_EDGE_TOL && t >= -PDF_QUAD_EDGE_TOL &&
-          t <= 1.0 + PDF_QUAD_EDGE_TOL))
-        return 0.0;
-    return smp_area_to_solid_angle(p->as.quad.inv_area, r * r, denom);
+    double num = vec3_dot(p->as.quad.normal, vec3_sub(p->as.quad.corner, p->as.quad.origin));
+    return pdf_quad_density(p->as.quad.origin, num, p->as.quad.corner, p->as.quad.u, p->as.quad.v,
+                            p->as.quad.normal, p->as.quad.w, p->as.quad.inv_area, d);
 }
 
 static vec3 quad_generate(const pdf *p, mc_rng *rng)
 {
     double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-    vec3 x = smp_parallelogram_sample(u1, u2, p->as.quad.corner, p->as.quad.u, p->as.quad.v);
-    return vec3_normalize(vec3_sub(x, p->as.quad.origin));
+    return pdf_quad_direction(p->as.quad.origin, p->as.quad.corner, p->as.quad.u, p->as.quad.v, u1, u2);
 }
-/* END SNIPPET toward_quad */
 
-/* BEGIN SNIPPET toward_sphere */
-/* Uniform in the cone: the cap sampler's constant density inside (taken at
- * its axis, which is always inside), 0 outside the rim. The rim test uses
- * the rounded cosine with its slack; the density uses 1 - cos theta_max
- * carried without cancellation, so a far sphere's density is finite and
- * accurate where 1 / (2 pi (1 - cos theta_max)) would be +inf. */
+/* Uniform in the cone, 0 outside its rim. The rim test uses the rounded
+ * cosine with its slack; the density uses 1 - cos theta_max. */
 static double sphere_value(const pdf *p, vec3 d)
 {
-    double cos_max = p->as.sphere.cos_theta_max;
-    if (vec3_dot(d, p->as.sphere.frame.n) < cos_max - PDF_CONE_RIM_TOL)
+    if (!pdf_cone_contains(p->as.sphere.frame.n, p->as.sphere.cos_theta_max, d))
         return 0.0;
-    return smp_uniform_cap_pdf(vec3_make(0.0, 0.0, 1.0), p->as.sphere.one_minus_cos);
+    return pdf_cone_density(p->as.sphere.one_minus_cos);
 }
 
 static vec3 sphere_generate(const pdf *p, mc_rng *rng)
 {
     double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-    vec3 local = smp_uniform_cap_sample(u1, u2, p->as.sphere.one_minus_cos);
-    return onb_to_world(&p->as.sphere.frame, local);
+    return pdf_cone_direction(&p->as.sphere.frame, p->as.sphere.one_minus_cos, u1, u2);
 }
-/* END SNIPPET toward_sphere */
 
 double pdf_value(const pdf *p, vec3 d)
 {
     switch (p->kind) {
     case PDF_UNIFORM_SPHERE:
         return MC_INV_4PI;
-    case PDF_COSINE: {
-        double cos_theta = vec3_dot(d, p->as.cosine.frame.n);
-        return cos_theta > 0.0 ? cos_theta * MC_INV_PI : 0.0;
-    }
+    case PDF_COSINE:
+        return pdf_cosine_density(p->as.cosine.frame.n, d);
     case PDF_TOWARD_QUAD:
         return quad_value(p, d);
     case PDF_TOWARD_SPHERE:
@@ -196,7 +159,7 @@ vec3 pdf_generate(const pdf *p, mc_rng *rng)
     }
     case PDF_COSINE: {
         double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-        return onb_to_world(&p->as.cosine.frame, smp_cosine_hemisphere_sample(u1, u2));
+        return pdf_cosine_direction(&p->as.cosine.frame, u1, u2);
     }
     case PDF_TOWARD_QUAD:
         return quad_generate(p, rng);

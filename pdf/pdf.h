@@ -27,9 +27,14 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+#include "mc/constants.h"
 #include "mc/onb.h"
 #include "mc/rng.h"
 #include "mc/vec3.h"
+#include "samplers/cone.h"
+#include "samplers/hemisphere.h"
+#include "samplers/measure.h"
+#include "samplers/planar.h"
 
 typedef enum pdf_kind {
     PDF_UNIFORM_SPHERE, /* 1 / (4 pi) everywhere */
@@ -163,6 +168,118 @@ vec3 pdf_generate(const pdf *p, mc_rng *rng);
  * same value (same bits); pdf/chart.c deliberately uses a looser one for
  * classifying samples (see there). */
 #define PDF_CONE_RIM_TOL 1e-15
+
+/* The formulas of the densities, each written once. pdf_value and
+ * pdf_generate use them; so does the renderer (render/lights.h), which
+ * keeps the hit-point-independent constants of its lights and the
+ * direction-independent ones of each hit point instead of building pdf
+ * objects, and must get the same bits. Inline: the renderer calls them at
+ * every diffuse hit. */
+
+/* The constants of the parallelogram with edges u, v: its unit normal
+ * (u x v) / |u x v|, w = (u x v) / |u x v|^2 (which gives the edge
+ * coordinates) and 1 / area = 1 / |u x v|. A degenerate parallelogram
+ * keeps zero vectors and a zero density rather than dividing by zero. */
+static inline void pdf_quad_constants(vec3 u, vec3 v, vec3 *normal, vec3 *w, double *inv_area)
+{
+    vec3 n = vec3_cross(u, v);
+    double len_sq = vec3_length_sq(n);
+    *normal = len_sq > 0.0 ? vec3_scale(n, 1.0 / sqrt(len_sq)) : n;
+    *w = len_sq > 0.0 ? vec3_scale(n, 1.0 / len_sq) : n;
+    *inv_area = len_sq > 0.0 ? 1.0 / sqrt(len_sq) : 0.0;
+}
+
+/* BEGIN SNIPPET toward_quad */
+/* The density toward the parallelogram corner + s u + t v (constants as
+ * above) from origin, per unit solid angle, at the unit direction d;
+ * num = normal . (corner - origin), which does not depend on d. Where the
+ * ray origin + r d (r > 0) meets the parallelogram, the density 1 / A per
+ * unit area becomes dist^2 / (|cos| A) per unit solid angle, because a
+ * patch dA at distance dist, tilted by the angle whose cosine is cos,
+ * subtends d omega = |cos| dA / dist^2 (chapter 7). */
+static inline double pdf_quad_density(vec3 origin, double num, vec3 corner, vec3 u, vec3 v,
+                                      vec3 normal, vec3 w, double inv_area, vec3 d)
+{
+    double denom = vec3_dot(normal, d);
+    if (denom == 0.0)
+        return 0.0;
+    double r = num / denom;
+    if (!(r > 0.0))
+        return 0.0;
+    vec3 q = vec3_sub(vec3_madd(origin, d, r), corner);
+    /* With q = s u + t v and w = (u x v) / |u x v|^2: q x v = s (u x v) and
+     * u x q = t (u x v), so dotting with w isolates s and t. */
+    double s = vec3_dot(w, vec3_cross(q, v));
+    double t = vec3_dot(w, vec3_cross(u, q));
+    if (!(s >= -PDF_QUAD_EDGE_TOL && s <= 1.0 + PDF_QUAD_EDGE_TOL && t >= -PDF_QUAD_EDGE_TOL &&
+          t <= 1.0 + PDF_QUAD_EDGE_TOL))
+        return 0.0;
+    return smp_area_to_solid_angle(inv_area, r * r, denom);
+}
+
+/* The direction from origin toward the point of the parallelogram that
+ * the uniforms u1, u2 select (uniform in area). */
+static inline vec3 pdf_quad_direction(vec3 origin, vec3 corner, vec3 u, vec3 v, double u1, double u2)
+{
+    vec3 x = smp_parallelogram_sample(u1, u2, corner, u, v);
+    return vec3_normalize(vec3_sub(x, origin));
+}
+/* END SNIPPET toward_quad */
+
+/* BEGIN SNIPPET toward_sphere */
+/* The cone from origin that holds the sphere (center, radius): its unit
+ * axis (returned; +z from the centre itself, where the cone is the whole
+ * sphere and any axis will do), cos theta_max and 1 - cos theta_max
+ * carried without cancellation (samplers/cone.h). */
+static inline vec3 pdf_sphere_cone(vec3 origin, vec3 center, double radius, double *cos_max,
+                                   double *one_minus_cos)
+{
+    vec3 axis = vec3_sub(center, origin);
+    double dist_sq = vec3_length_sq(axis);
+    *one_minus_cos = smp_sphere_cone_cap(dist_sq, radius, cos_max);
+    return dist_sq > 0.0 ? vec3_scale(axis, 1.0 / sqrt(dist_sq)) : vec3_make(0.0, 0.0, 1.0);
+}
+
+/* The density of uniform directions in that cone, per unit solid angle,
+ * inside it: the cap sampler's constant density (taken at its axis, which
+ * is always inside). From 1 - cos theta_max carried without cancellation,
+ * a far sphere's density is finite and accurate where
+ * 1 / (2 pi (1 - cos theta_max)) would be +inf. */
+static inline double pdf_cone_density(double one_minus_cos)
+{
+    return smp_uniform_cap_pdf(vec3_make(0.0, 0.0, 1.0), one_minus_cos);
+}
+
+/* Whether the unit direction d is inside the cone (unit axis, cos
+ * theta_max): d . axis is its cosine in the cone's frame, and the rim gets
+ * the slack PDF_CONE_RIM_TOL. */
+static inline bool pdf_cone_contains(vec3 axis, double cos_max, vec3 d)
+{
+    return !(vec3_dot(d, axis) < cos_max - PDF_CONE_RIM_TOL);
+}
+
+/* The direction of the cone (frame.n its axis) that the uniforms u1, u2
+ * select, uniform in solid angle. */
+static inline vec3 pdf_cone_direction(const onb *frame, double one_minus_cos, double u1, double u2)
+{
+    return onb_to_world(frame, smp_uniform_cap_sample(u1, u2, one_minus_cos));
+}
+/* END SNIPPET toward_sphere */
+
+/* The cosine density about the unit normal n, per unit solid angle:
+ * max(0, cos theta) / pi. */
+static inline double pdf_cosine_density(vec3 n, vec3 d)
+{
+    double cos_theta = vec3_dot(d, n);
+    return cos_theta > 0.0 ? cos_theta * MC_INV_PI : 0.0;
+}
+
+/* The cosine-weighted direction about frame.n that the uniforms u1, u2
+ * select (the book's mapping, samplers/hemisphere.h). */
+static inline vec3 pdf_cosine_direction(const onb *frame, double u1, double u2)
+{
+    return onb_to_world(frame, smp_cosine_hemisphere_sample(u1, u2));
+}
 
 /* Tolerance on |sum of weights - 1| accepted by the checks below. A
  * weight sum off by 1e-9 biases an estimate by at most 1e-9 relative, far

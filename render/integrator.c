@@ -7,7 +7,7 @@
 
 #include "mc/constants.h"
 #include "mc/onb.h"
-#include "render/lights4.h"
+#include "render/fast/lights4.h"
 #include "samplers/hemisphere.h"
 
 _Static_assert(RT_MAX_LIGHTS <= RT_LIGHTS_AT_MAX, "rt_lights_at holds every light of a scene");
@@ -54,99 +54,78 @@ static bool roulette(const rt_path_settings *ps, int depth, vec3 *beta, mc_rng *
 }
 
 /* --- the densities --------------------------------------------------------
- * Each helper has two bodies that compute the same numbers: the book's pdf
- * objects (reference) and render/lights.h (fast). */
-
-static vec3 lights_generate(const rt_scene *s, const rt_path_settings *ps, vec3 p, mc_rng *rng)
-{
-    if (!ps->pdf_objects)
-        return rt_lights_generate(rt_scene_lights(s), rt_scene_light_count(s), p, rng);
+ * The light list seen from one hit point: the book's pdf objects (a
+ * pdf_list of pdf_toward_quad / pdf_toward_sphere, with ps->pdf_objects:
+ * the reference) or the constants render/lights.h keeps, which go through
+ * the same formulas of pdf/pdf.h and give the same bits. This is the one
+ * place that tells them apart; every density below is written once. */
+typedef struct lights_at {
+    bool objects;
+    rt_lights_at cache;
+    pdf list;
     pdf items[RT_MAX_LIGHTS];
     const pdf *ptrs[RT_MAX_LIGHTS];
-    pdf lights = rt_scene_lights_pdf(s, p, items, ptrs);
-    return pdf_generate(&lights, rng);
+} lights_at;
+
+/* The light list from p (the scene has at least one light). Prepared
+ * once per hit point: the draw and the density there share it. */
+static void lights_prepare(lights_at *a, const rt_scene *s, const rt_path_settings *ps, vec3 p)
+{
+    a->objects = ps->pdf_objects;
+    if (a->objects)
+        a->list = rt_scene_lights_pdf(s, p, a->items, a->ptrs);
+    else
+        rt_lights_prepare(&a->cache, rt_scene_lights(s), rt_scene_light_count(s), p);
 }
 
-/* The light-list density times the negative-control scale. */
-static double lights_value(const rt_scene *s, const rt_path_settings *ps, vec3 p, vec3 d)
+/* A direction toward the lights (pdf_generate of the list). */
+static vec3 lights_generate(const lights_at *a, mc_rng *rng)
 {
-    double v;
-    if (!ps->pdf_objects) {
-        v = rt_lights_value(rt_scene_lights(s), rt_scene_light_count(s), p, d);
-    } else {
-        pdf items[RT_MAX_LIGHTS];
-        const pdf *ptrs[RT_MAX_LIGHTS];
-        pdf lights = rt_scene_lights_pdf(s, p, items, ptrs);
-        v = pdf_value(&lights, d);
-    }
-    return v * ps->light_pdf_scale;
+    return a->objects ? pdf_generate(&a->list, rng) : rt_lights_at_generate(&a->cache, rng);
 }
 
-static vec3 material_generate(const rt_path_settings *ps, const rt_scatter *sr, mc_rng *rng)
+/* The list's density at the unit direction d, per unit solid angle. */
+static double lights_value(const lights_at *a, vec3 d)
 {
-    if (!ps->pdf_objects)
-        return rt_cosine_generate(sr->normal, rng);
-    pdf cosine = rt_scatter_pdf(sr);
-    return pdf_generate(&cosine, rng);
+    return a->objects ? pdf_value(&a->list, d) : rt_lights_at_value(&a->cache, d);
 }
 
-static double material_value(const rt_path_settings *ps, const rt_scatter *sr, vec3 d)
+/* The material's density at a diffuse hit: pdf_cosine about the normal
+ * (rt_scatter_pdf), through the formulas pdf_cosine uses. */
+static vec3 material_generate(const rt_scatter *sr, mc_rng *rng)
 {
-    if (!ps->pdf_objects)
-        return rt_cosine_value(sr->normal, d);
-    pdf cosine = rt_scatter_pdf(sr);
-    return pdf_value(&cosine, d);
+    return rt_cosine_generate(sr->normal, rng);
 }
+
+static double material_value(const rt_scatter *sr, vec3 d) { return rt_cosine_value(sr->normal, d); }
 
 /* The chapter-8 mixture weights: 1/2 lights + 1/2 material. */
 static const double mixture_weights[2] = {0.5, 0.5};
 
-/* The fast mixture's draw from the light list prepared at the hit point:
- * pdf_mixture's choice (component 0 when the uniform is below its
- * weight), then that component's generate. */
-static vec3 mixture_draw(const rt_path_settings *ps, const rt_scatter *sr, const rt_lights_at *at,
-                         mc_rng *rng)
-{
-    return mc_rng_uniform(rng) < mixture_weights[0] ? rt_lights_at_generate(at, rng)
-                                                    : material_generate(ps, sr, rng);
-}
-
-/* The fast mixture's density at dir given the light list's density there
- * (with the negative-control scale), summed in pdf_mixture's order. */
+/* The mixture's density at dir given the light list's density there,
+ * summed in pdf_mixture's order (so the same bits as pdf_value of
+ * pdf_mixture), with the negative-control scale on the light part. */
 static double mixture_density(const rt_path_settings *ps, const rt_scatter *sr, vec3 dir,
                               double light_value)
 {
     double sum = 0.0;
     sum += mixture_weights[0] * (light_value * ps->light_pdf_scale);
-    sum += mixture_weights[1] * material_value(ps, sr, dir);
+    sum += mixture_weights[1] * material_value(sr, dir);
     return sum;
 }
 
-/* The chapter-8 mixture: one direction and the mixture density there
- * (with the negative-control scale on the light part), by the pdf objects
- * or by the fast densities (the same numbers). */
+/* The chapter-8 mixture: one direction and the mixture density there.
+ * The draw is pdf_mixture's: component 0 (the lights) when a uniform is
+ * below its weight, else the material, then that component's generate. */
 /* BEGIN SNIPPET mixture_sample */
 static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, const rt_hit *h,
                              const rt_scatter *sr, mc_rng *rng, vec3 *dir)
 {
-    if (ps->pdf_objects) {
-        pdf items[RT_MAX_LIGHTS];
-        const pdf *ptrs[RT_MAX_LIGHTS];
-        pdf lights = rt_scene_lights_pdf(s, h->p, items, ptrs), cosine = rt_scatter_pdf(sr);
-        const pdf *comps[2] = {&lights, &cosine};
-        pdf mix = pdf_mixture(comps, mixture_weights, 2);
-        *dir = pdf_generate(&mix, rng);
-        double p = pdf_value(&mix, *dir);
-        if (ps->light_pdf_scale != 1.0)
-            p += mixture_weights[0] * (ps->light_pdf_scale - 1.0) * pdf_value(&lights, *dir);
-        return p;
-    }
-    /* The light densities toward the hit point are prepared once for the
-     * draw and the value (the same expressions: the same bits). */
-    rt_lights_at at;
-    rt_lights_prepare(&at, rt_scene_lights(s), rt_scene_light_count(s), h->p);
-    *dir = mixture_draw(ps, sr, &at, rng);
-    return mixture_density(ps, sr, *dir, rt_lights_at_value(&at, *dir));
+    lights_at lights;
+    lights_prepare(&lights, s, ps, h->p);
+    *dir = mc_rng_uniform(rng) < mixture_weights[0] ? lights_generate(&lights, rng)
+                                                    : material_generate(sr, rng);
+    return mixture_density(ps, sr, *dir, lights_value(&lights, *dir));
 }
 /* END SNIPPET mixture_sample */
 
@@ -165,8 +144,8 @@ static double diffuse_direction(const rt_scene *s, const rt_path_settings *ps, c
         return MC_INV_2PI;
     }
     if (ps->strategy != RT_MIXTURE || rt_scene_light_count(s) == 0) {
-        *dir = material_generate(ps, sr, rng);
-        return material_value(ps, sr, *dir);
+        *dir = material_generate(sr, rng);
+        return material_value(sr, *dir);
     }
     return mixture_sample(s, ps, h, sr, rng, dir);
 }
@@ -210,10 +189,7 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
     }
     if (v->sr.specular) {
         p->beta = vec3_mul(p->beta, v->sr.attenuation);
-        /* Field by field: the material has just stored the ray as two
-         * vec3s (a 16- and an 8-byte store each), and a whole-struct copy
-         * loads it in 16-byte pieces, two of which straddle those stores
-         * and so wait for them to retire instead of being forwarded. */
+        /* Field by field, not as one struct (docs/performance.md). */
         p->ray.origin = v->sr.ray.origin;
         p->ray.dir = v->sr.ray.dir;
         path_next(ps, p, rng);
@@ -262,8 +238,9 @@ vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const rt_
                   int k, mc_rng *rng)
 {
     /* mixture_draw with the lights prepared in lane k of at4. */
+    (void)ps;
     return mc_rng_uniform(rng) < mixture_weights[0] ? rt_lights4_generate(at4, k, rng)
-                                                    : material_generate(ps, &v->sr, rng);
+                                                    : material_generate(&v->sr, rng);
 }
 
 void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
@@ -327,7 +304,9 @@ static double continued_weight(const rt_scene *s, const rt_path_settings *ps, ve
 {
     if (rt_scene_light_count(s) == 0)
         return 1.0;
-    double pl = lights_value(s, ps, from, dir);
+    lights_at lights;
+    lights_prepare(&lights, s, ps, from);
+    double pl = lights_value(&lights, dir) * ps->light_pdf_scale;
     if (ps->strategy == RT_LIGHT)
         return pl > 0.0 ? 0.0 : 1.0;
     return power_weight(p_mat, pl);
@@ -343,8 +322,10 @@ static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt
     vec3 zero = vec3_make(0.0, 0.0, 0.0);
     if (rt_scene_light_count(s) == 0)
         return zero;
-    vec3 dir = lights_generate(s, ps, h->p, rng);
-    double pl = lights_value(s, ps, h->p, dir);
+    lights_at lights;
+    lights_prepare(&lights, s, ps, h->p);
+    vec3 dir = lights_generate(&lights, rng);
+    double pl = lights_value(&lights, dir) * ps->light_pdf_scale;
     double sp = rt_material_scattering_pdf(m, h, dir);
     if (!(sp > 0.0 && pl > 0.0))
         return zero;
@@ -353,7 +334,7 @@ static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt
         return zero;
     double w = 1.0;
     if (ps->strategy == RT_MIS) {
-        double pm = material_value(ps, sr, dir);
+        double pm = material_value(sr, dir);
         w = power_weight(pl, pm);
     }
     return vec3_scale(vec3_mul(sr->attenuation, le), sp * w / pl);
@@ -390,8 +371,8 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
              * the one that reached here: only within max_depth. */
             if (depth + 1 < ps->max_depth)
                 L = vec3_add(L, vec3_mul(beta, direct_light(s, ps, m, &h, &sr, rng, segments)));
-            vec3 dir = material_generate(ps, &sr, rng);
-            double pm = material_value(ps, &sr, dir);
+            vec3 dir = material_generate(&sr, rng);
+            double pm = material_value(&sr, dir);
             double sp = rt_material_scattering_pdf(m, &h, dir);
             if (!(sp > 0.0))
                 break;

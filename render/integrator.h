@@ -33,7 +33,7 @@
 
 #include "mc/rng.h"
 #include "mc/vec3.h"
-#include "render/lights4.h"
+#include "render/lights.h"
 #include "render/ray.h"
 #include "render/scene.h"
 
@@ -48,9 +48,10 @@ typedef struct rt_path_settings {
      * by is multiplied by this (1 for a correct renderer); the sampling is
      * unchanged, so any other value makes the image wrong. */
     double light_pdf_scale;
-    /* Evaluate the densities with pdf objects built at every bounce, as
-     * the book does (pdf/pdf.h), instead of render/lights.h. Both give the
-     * same numbers; the objects are the reference, the default is faster. */
+    /* Build the light list's pdf objects at every bounce, as the book does
+     * (pdf/pdf.h), instead of render/lights.h's cached constants. Both give
+     * the same numbers; the objects are the reference, the default is
+     * faster. */
     bool pdf_objects;
 } rt_path_settings;
 
@@ -77,7 +78,7 @@ vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r, mc
                  uint64_t *segments);
 
 /* The book's integrator one segment at a time, so that a caller can
- * trace the segments of several paths together (rt_scene_hit4): a path
+ * trace the segments of several paths together (render/fast/rows.h): a path
  * is begun with its camera ray, then, while it is not done, its ray is
  * traced and the result handed to rt_path_scatter and rt_path_continue
  * (below). The result is that of
@@ -119,11 +120,12 @@ void rt_path_continue(const rt_scene *s, const rt_path_settings *ps, rt_path_sta
 /* True when rt_path_continue is the chapter-8 mixture with the fast
  * densities of render/lights.h: then it may also be done in three parts,
  * with the light list prepared at the vertices of four paths and
- * evaluated by the caller (render/lights4.h): dir = rt_path_draw(v, at4,
+ * evaluated by the caller (render/fast/lights4.h): dir = rt_path_draw(v, at4,
  * lane), value = the light list's density at dir (rt_lights4_value),
  * rt_path_finish(v, dir, value). The same numbers as rt_path_continue. */
+struct rt_lights4;
 bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps);
-vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const rt_lights4 *at4,
+vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const struct rt_lights4 *at4,
                   int k, mc_rng *rng);
 void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
                     vec3 dir, double light_value, mc_rng *rng);

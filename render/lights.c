@@ -11,11 +11,7 @@ rt_light rt_light_make(const rt_prim *p)
         l.q = p->as.quad.q;
         l.u = p->as.quad.u;
         l.v = p->as.quad.v;
-        vec3 n = vec3_cross(l.u, l.v);
-        double len_sq = vec3_length_sq(n);
-        l.normal = vec3_scale(n, 1.0 / sqrt(len_sq));
-        l.w = vec3_scale(n, 1.0 / len_sq);
-        l.inv_area = 1.0 / sqrt(len_sq);
+        pdf_quad_constants(l.u, l.v, &l.normal, &l.w, &l.inv_area);
     } else {
         l.center = p->as.sphere.center;
         l.radius = p->as.sphere.radius;

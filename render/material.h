@@ -89,11 +89,8 @@ bool rt_material_scatter_specular(const rt_material *m, const rt_ray *in, const 
  * material absorbs it (a light, or fuzzed metal sent below the surface).
  * Draws uniforms from rng only for specular events. Inline, with the
  * diffuse case first: it follows every hit, and most hits in the Cornell
- * box are diffuse. The ray goes by pointer: by value (48 bytes, passed in
- * memory) the caller copied it to the stack just before the call in
- * 16-byte pieces that the callee's loads of dir straddled, and a load
- * that straddles two stores still in flight waits for both to retire
- * (store-to-load forwarding fails): several percent of the renderer. */
+ * box are diffuse. The ray goes by pointer (docs/performance.md says
+ * why). */
 static inline bool rt_material_scatter(const rt_material *m, const rt_ray *in, const rt_hit *h,
                                        mc_rng *rng, rt_scatter *s)
 {

@@ -20,8 +20,8 @@
  *   others, and the caller reports the total sample count actually taken.
  * - The book's integrator (strategies uniform, cosine, mixture) advances
  *   four paths together, one pixel per lane, tracing their segments with
- *   one rt_scene_hit4 and evaluating their light densities with
- *   render/lights4.h; each pixel still consumes its own stream in the same
+ *   one four-ray query and evaluating their light densities in vector
+ *   lanes (render/fast/rows.h); each pixel still consumes its own stream in the same
  *   order, so the image is the one of one path at a time, bit for bit
  *   (rt_render_job.one_path_at_a_time keeps that reference).
  * Library code never prints; progress goes to a caller's callback.
@@ -59,8 +59,8 @@ typedef struct rt_render_job {
     rt_progress_fn progress;
     void *progress_ctx;
     const atomic_int *cancel; /* may be NULL; nonzero stops the render */
-    /* The book's integrator (rt_path_steppable) traces RT_BVH_LANES paths
-     * together, one pixel per lane (rt_scene_hit4); true traces one path
+    /* The book's integrator (rt_path_steppable) traces four paths
+     * together, one pixel per lane (render/fast/rows.h); true traces one path
      * at a time instead: the same image bit for bit, kept as the
      * reference the tests compare against. */
     bool one_path_at_a_time;

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "mc/constants.h"
+#include "render/fast/hit4.h"
 
 typedef enum node_kind { NODE_PRIM, NODE_LIST, NODE_TRANSLATE, NODE_ROTATE_Y, NODE_FLIP } node_kind;
 
@@ -35,6 +36,8 @@ struct rt_scene {
     rt_prim *prims;
     int n_prims, cap_prims;
     rt_bvh bvh;
+    rt_leaf_lanes *lanes; /* the root leaf for the fast path, NULL if none */
+    rt_isa isa;           /* rt_isa_best(), for rt_scene_hit */
     rt_prim lights[RT_MAX_LIGHTS];
     rt_light fast_lights[RT_MAX_LIGHTS];
     int n_lights;
@@ -76,6 +79,7 @@ void rt_scene_destroy(rt_scene *s)
     free(s->world);
     free(s->prims);
     rt_bvh_destroy(&s->bvh);
+    rt_leaf_lanes_destroy(s->lanes);
     free(s);
 }
 
@@ -305,6 +309,11 @@ int rt_scene_build(rt_scene *s)
         !materials_valid(s, s->lights, s->n_lights) ||
         rt_bvh_build(&s->bvh, s->prims, s->n_prims) != 0)
         return -1;
+    /* A tree that is one leaf (a small scene) is also laid out for the
+     * fast path's four-ray and one-ray tests. */
+    if (s->bvh.nodes[0].count > 0 && !(s->lanes = rt_leaf_lanes_create(s->prims, s->n_prims)))
+        return -1;
+    s->isa = rt_isa_best();
     s->built = true;
     return 0;
 }
@@ -313,13 +322,7 @@ int rt_scene_build(rt_scene *s)
 
 bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
 {
-    return rt_bvh_hit(&s->bvh, s->prims, &r, s->t_min, tmax, h);
-}
-
-unsigned rt_scene_hit4(const rt_scene *s, const rt_ray r[RT_BVH_LANES], double tmax,
-                       rt_hit h[RT_BVH_LANES])
-{
-    return rt_bvh_hit4(&s->bvh, s->prims, r, s->t_min, tmax, h);
+    return rt_leaf_lanes_hit1(s->isa, s->lanes, &s->bvh, s->prims, &r, s->t_min, tmax, h);
 }
 
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
@@ -340,7 +343,7 @@ static bool tree_hit(const rt_scene *s, int o, rt_ray r, double tmin, double tma
     const node *n = &s->nodes[o];
     switch (n->kind) {
     case NODE_PRIM: {
-        double t = rt_prim_t(&n->prim, r, tmin, tmax);
+        double t = rt_prim_hit_distance(&n->prim, r, tmin, tmax);
         if (!(t < tmax))
             return false;
         rt_prim_hit_record(&n->prim, -1, r, t, h);
@@ -418,3 +421,4 @@ vec3 rt_scene_background(const rt_scene *s) { return s->background; }
 int rt_scene_prim_count(const rt_scene *s) { return s->n_prims; }
 const rt_prim *rt_scene_prims(const rt_scene *s) { return s->prims; }
 const rt_bvh *rt_scene_bvh(const rt_scene *s) { return &s->bvh; }
+const struct rt_leaf_lanes *rt_scene_leaf_lanes(const rt_scene *s) { return s->lanes; }

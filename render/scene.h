@@ -88,13 +88,10 @@ void rt_scene_set_background(rt_scene *s, vec3 radiance);
  * after every object was added and before any query. */
 int rt_scene_build(rt_scene *s);
 
-/* The closest hit of r with t in (t_min, tmax), through the BVH. */
+/* The closest hit of r with t in (t_min, tmax), through the BVH: for a
+ * root leaf, the fast path's one-ray test (rt_leaf_lanes_hit1, with the
+ * instruction set of rt_isa_best), the same bits as the reference. */
 bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
-
-/* rt_scene_hit for RT_BVH_LANES rays at once (rt_bvh_hit4): bit k of the
- * result says whether r[k] hit, and then h[k] is its record. */
-unsigned rt_scene_hit4(const rt_scene *s, const rt_ray r[RT_BVH_LANES], double tmax,
-                       rt_hit h[RT_BVH_LANES]);
 
 /* The same by testing every flattened primitive (reference). */
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
@@ -127,5 +124,9 @@ vec3 rt_scene_background(const rt_scene *s);
 int rt_scene_prim_count(const rt_scene *s);
 const rt_prim *rt_scene_prims(const rt_scene *s);
 const rt_bvh *rt_scene_bvh(const rt_scene *s);
+
+/* The root leaf laid out for the fast path's four-ray test
+ * (render/fast/hit4.h), NULL when the root is not a leaf. */
+const struct rt_leaf_lanes *rt_scene_leaf_lanes(const rt_scene *s);
 
 #endif /* RT_SCENE_H */

@@ -3,10 +3,10 @@
  *
  * The walls, the light and the boxes of chapters 4-10 of "Ray Tracing: The
  * Rest of Your Life" are quads; the glass sphere of chapter 10 is a sphere.
- * Intersection is split in two so that the BVH can stay cheap: the *_t
- * functions only find the distance (static inline, called for every
- * candidate), and rt_prim_hit_record fills in the point and normal once,
- * for the closest candidate.
+ * Intersection is split in two so that the BVH can stay cheap: the
+ * *_hit_distance functions only find the distance (static inline, called
+ * for every candidate), and rt_prim_hit_record fills in the point and
+ * normal once, for the closest candidate.
  */
 #ifndef RT_SHAPES_H
 #define RT_SHAPES_H
@@ -53,13 +53,13 @@ rt_sphere rt_sphere_make(vec3 center, double radius, double orient);
 
 /* Distance to the quad along r within (tmin, tmax), or HUGE_VAL. The edge
  * test is closed (a, b in [0, 1]) so that two quads sharing an edge leave
- * no crack between them. Branch-free: every candidate of a BVH leaf is
- * computed in full and kept by a conditional move, which costs less than
- * the mispredicted branches of early exits. A ray parallel to the plane
+ * no crack between them. Branch-free: which candidate of a BVH leaf is the
+ * nearest is unpredictable, so every one is computed in full and kept by a
+ * select rather than by early exits. A ray parallel to the plane
  * gets t = +-inf or NaN (0 / 0 for a ray inside it), which every range
  * test below rejects. */
-/* BEGIN SNIPPET quad_t_scalar */
-static inline double rt_quad_t(const rt_quad *s, rt_ray r, double tmin, double tmax)
+/* BEGIN SNIPPET quad_hit_distance */
+static inline double rt_quad_hit_distance(const rt_quad *s, rt_ray r, double tmin, double tmax)
 {
     double t = (s->plane - vec3_dot(s->normal, r.origin)) / vec3_dot(s->normal, r.dir);
     vec3 h = vec3_sub(rt_ray_at(r, t), s->q);
@@ -70,14 +70,14 @@ static inline double rt_quad_t(const rt_quad *s, rt_ray r, double tmin, double t
     int ok = (t > tmin) & (t < tmax) & (a >= 0.0) & (a <= 1.0) & (b >= 0.0) & (b <= 1.0);
     return ok ? t : HUGE_VAL;
 }
-/* END SNIPPET quad_t_scalar */
+/* END SNIPPET quad_hit_distance */
 
 /* Distance to the sphere along r within (tmin, tmax), or HUGE_VAL: the
  * nearer root of |o + t d - c|^2 = R^2 (|d| = 1) that is in range, else
  * the farther one (a ray leaving a glass sphere starts on it). Branch-free
- * like rt_quad_t; a negative discriminant (a miss) is clamped to 0 for the
+ * like rt_quad_hit_distance; a negative discriminant (a miss) is clamped to 0 for the
  * square root and rejected by `real`. */
-static inline double rt_sphere_t(const rt_sphere *s, rt_ray r, double tmin, double tmax)
+static inline double rt_sphere_hit_distance(const rt_sphere *s, rt_ray r, double tmin, double tmax)
 {
     vec3 oc = vec3_sub(s->center, r.origin);
     double h = vec3_dot(r.dir, oc);
@@ -94,10 +94,10 @@ static inline double rt_sphere_t(const rt_sphere *s, rt_ray r, double tmin, doub
 }
 
 /* Distance to primitive p along r within (tmin, tmax), or HUGE_VAL. */
-static inline double rt_prim_t(const rt_prim *p, rt_ray r, double tmin, double tmax)
+static inline double rt_prim_hit_distance(const rt_prim *p, rt_ray r, double tmin, double tmax)
 {
-    return p->kind == RT_PRIM_QUAD ? rt_quad_t(&p->as.quad, r, tmin, tmax)
-                                   : rt_sphere_t(&p->as.sphere, r, tmin, tmax);
+    return p->kind == RT_PRIM_QUAD ? rt_quad_hit_distance(&p->as.quad, r, tmin, tmax)
+                                   : rt_sphere_hit_distance(&p->as.sphere, r, tmin, tmax);
 }
 
 /* The book's set_face_normal: keep which side was hit, then turn the

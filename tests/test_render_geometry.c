@@ -5,11 +5,12 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "mc/constants.h"
 #include "mc/rng.h"
 #include "render/bvh.h"
-#include "render/bvh4.h"
+#include "render/fast/hit4.h"
 #include "render/camera.h"
 #include "render/scene.h"
 #include "render/scenes.h"
@@ -31,20 +32,20 @@ static void test_shapes_known_hits(void **state)
 {
     (void)state;
     rt_quad q = rt_quad_make(v3(0, 0, 5), v3(2, 0, 0), v3(0, 3, 0));
-    assert_near(rt_quad_t(&q, rt_ray_make(v3(1, 1.5, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
+    assert_near(rt_quad_hit_distance(&q, rt_ray_make(v3(1, 1.5, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
     /* The corner (a = b = 0) and the far corner (a = b = 1) belong to it. */
-    assert_near(rt_quad_t(&q, rt_ray_make(v3(0, 0, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
-    assert_near(rt_quad_t(&q, rt_ray_make(v3(2, 3, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
-    assert_true(rt_quad_t(&q, rt_ray_make(v3(2.001, 1, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL) == HUGE_VAL);
-    assert_true(rt_quad_t(&q, rt_ray_make(v3(1, 1, 5), v3(1, 0, 0)), 1e-3, HUGE_VAL) == HUGE_VAL);
-    assert_true(rt_quad_t(&q, rt_ray_make(v3(1, 1, 0), v3(0, 0, 1)), 1e-3, 4.0) == HUGE_VAL);
+    assert_near(rt_quad_hit_distance(&q, rt_ray_make(v3(0, 0, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
+    assert_near(rt_quad_hit_distance(&q, rt_ray_make(v3(2, 3, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 5.0, 1e-15);
+    assert_true(rt_quad_hit_distance(&q, rt_ray_make(v3(2.001, 1, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL) == HUGE_VAL);
+    assert_true(rt_quad_hit_distance(&q, rt_ray_make(v3(1, 1, 5), v3(1, 0, 0)), 1e-3, HUGE_VAL) == HUGE_VAL);
+    assert_true(rt_quad_hit_distance(&q, rt_ray_make(v3(1, 1, 0), v3(0, 0, 1)), 1e-3, 4.0) == HUGE_VAL);
     assert_near(q.normal.z, 1.0, 1e-15);
     rt_sphere s = rt_sphere_make(v3(0, 0, 10), 2.0, 1.0);
-    assert_near(rt_sphere_t(&s, rt_ray_make(v3(0, 0, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 8.0, 1e-14);
-    assert_near(rt_sphere_t(&s, rt_ray_make(v3(0, 0, 10), v3(0, 0, 1)), 1e-3, HUGE_VAL), 2.0, 1e-14);
-    assert_true(rt_sphere_t(&s, rt_ray_make(v3(0, 2.5, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL) == HUGE_VAL);
+    assert_near(rt_sphere_hit_distance(&s, rt_ray_make(v3(0, 0, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL), 8.0, 1e-14);
+    assert_near(rt_sphere_hit_distance(&s, rt_ray_make(v3(0, 0, 10), v3(0, 0, 1)), 1e-3, HUGE_VAL), 2.0, 1e-14);
+    assert_true(rt_sphere_hit_distance(&s, rt_ray_make(v3(0, 2.5, 0), v3(0, 0, 1)), 1e-3, HUGE_VAL) == HUGE_VAL);
     /* Leaving the sphere from its surface: the far root. */
-    assert_near(rt_sphere_t(&s, rt_ray_make(v3(0, 0, 8), v3(0, 0, 1)), 1e-3, HUGE_VAL), 4.0, 1e-14);
+    assert_near(rt_sphere_hit_distance(&s, rt_ray_make(v3(0, 0, 8), v3(0, 0, 1)), 1e-3, HUGE_VAL), 4.0, 1e-14);
 }
 
 /* Every face of a box is met on its front face from outside, and the
@@ -152,7 +153,7 @@ static void check_bvh(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t 
         int ia, ib;
         double ta = rt_bvh_closest(rt_scene_bvh(s), prims, r, 1e-3, HUGE_VAL, &ia);
         double tb = rt_prims_closest(prims, n, r, 1e-3, HUGE_VAL, &ib);
-        if (ta != tb || (ia != ib && rt_prim_t(&prims[ia], r, 1e-3, HUGE_VAL) != tb)) {
+        if (ta != tb || (ia != ib && rt_prim_hit_distance(&prims[ia], r, 1e-3, HUGE_VAL) != tb)) {
             fail_msg("ray %d: BVH t %.17g (prim %d), brute force t %.17g (prim %d)", i, ta, ia, tb, ib);
         }
         hits += ia >= 0;
@@ -162,7 +163,7 @@ static void check_bvh(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t 
     assert_true(hits > n_rays / 10);
 }
 
-/* rt_bvh_hit4 against rt_bvh_hit ray by ray: the same hit or miss, the
+/* rt_leaf_lanes_hit against rt_bvh_hit ray by ray: the same hit or miss, the
  * same distance bit for bit, and the same record when the primitive is
  * the same (on an exact tie another primitive at the same distance may
  * win). */
@@ -184,8 +185,8 @@ static rt_ray axis_ray(mc_rng *rng, vec3 lo, vec3 hi)
     return rt_ray_make(v3(o[0], o[1], o[2]), vec3_normalize(v3(c[0], c[1], c[2])));
 }
 
-/* rt_bvh4_hit with instruction set isa (rt_bvh_hit4 itself for
- * RT_BVH4_SCALAR + the best: the public entry) against rt_bvh_hit. */
+/* rt_leaf_lanes_hit with instruction set isa (rt_scene_hit4 with the
+ * best for RT_ISA_COUNT: the renderer's entry) against rt_bvh_hit. */
 static int check_hit4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed, int isa)
 {
     mc_rng rng = mc_rng_derive(seed, 0u);
@@ -193,14 +194,15 @@ static int check_hit4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, ui
     const rt_bvh *b = rt_scene_bvh(s);
     int hits = 0;
     for (int i = 0; i < n_batches; i++) {
-        rt_ray r[RT_BVH_LANES];
-        rt_hit h4[RT_BVH_LANES];
-        for (int k = 0; k < RT_BVH_LANES; k++)
+        rt_ray r[RT_LANES];
+        rt_hit h4[RT_LANES];
+        for (int k = 0; k < RT_LANES; k++)
             r[k] = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
-        unsigned mask = isa > (int)RT_BVH4_AVX512
-                            ? rt_bvh_hit4(b, prims, r, 1e-3, HUGE_VAL, h4)
-                            : rt_bvh4_hit((rt_bvh4_isa)isa, b, prims, r, 1e-3, HUGE_VAL, h4);
-        for (int k = 0; k < RT_BVH_LANES; k++) {
+        unsigned mask = isa == RT_ISA_COUNT
+                            ? rt_scene_hit4(s, rt_isa_best(), r, HUGE_VAL, h4)
+                            : rt_leaf_lanes_hit((rt_isa)isa, rt_scene_leaf_lanes(s), b, prims, r,
+                                                1e-3, HUGE_VAL, h4);
+        for (int k = 0; k < RT_LANES; k++) {
             rt_hit h1;
             bool hit = rt_bvh_hit(b, prims, &r[k], 1e-3, HUGE_VAL, &h1);
             if (hit != (((mask >> k) & 1u) != 0))
@@ -211,7 +213,7 @@ static int check_hit4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, ui
             if (h4[k].t != h1.t)
                 fail_msg("batch %d lane %d: t %.17g against %.17g", i, k, h4[k].t, h1.t);
             if (h4[k].prim != h1.prim) {
-                if (rt_prim_t(&prims[h4[k].prim], r[k], 1e-3, HUGE_VAL) != h1.t)
+                if (rt_prim_hit_distance(&prims[h4[k].prim], r[k], 1e-3, HUGE_VAL) != h1.t)
                     fail_msg("batch %d lane %d: prim %d against %d", i, k, h4[k].prim, h1.prim);
                 continue;
             }
@@ -225,13 +227,13 @@ static int check_hit4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, ui
     return hits;
 }
 
-/* check_hit4_isa through the public rt_bvh_hit4 (the processor's best
- * instruction set), then every instruction set below the best on a fifth
- * of the rays: so the AVX2 path stays tested on a processor with AVX-512. */
+/* check_hit4_isa through rt_scene_hit4 (the processor's best instruction
+ * set), then every instruction set below the best on a fifth of the
+ * rays: so the portable path stays tested on a processor with AVX2. */
 static int check_hit4(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed)
 {
-    int hits = check_hit4_isa(s, n_batches, lo, hi, seed, (int)RT_BVH4_AVX512 + 1);
-    for (int isa = RT_BVH4_SCALAR; isa < (int)rt_bvh4_isa_best(); isa++)
+    int hits = check_hit4_isa(s, n_batches, lo, hi, seed, RT_ISA_COUNT);
+    for (int isa = 0; isa < (int)rt_isa_best(); isa++)
         check_hit4_isa(s, n_batches / 5, lo, hi, seed + 100u, isa);
     return hits;
 }
@@ -265,18 +267,17 @@ static void test_bvh_hit4_matches_hit(void **state)
     assert_int_equal(rt_scene_build(s), 0);
     assert_true(rt_scene_bvh(s)->nodes[0].count == 0); /* not a leaf: the other path */
     hits = check_hit4(s, 20000, v3(-20, -20, -20), v3(120, 120, 120), 18u);
-    printf("rt_bvh_hit4 = rt_bvh_hit on 1.2 x 10^6 + 8 x 10^4 rays (%d hits in the soup)\n", hits);
+    printf("rt_scene_hit4 = rt_bvh_hit on 1.2 x 10^6 + 8 x 10^4 rays (%d hits in the soup)\n", hits);
     assert_true(hits > 8000);
     rt_scene_destroy(s);
 }
 
-/* A root leaf with a quad of every layout of bvh4.h: axis-aligned, turned
- * about x (its ea along x: a and b swapped) and about z, flat in a z
- * plane, in general position; a sphere and an inward one around it all.
- * 2 x 10^4 batches through the public entry and each instruction set. */
-static void test_bvh_hit4_quad_kinds(void **state)
+/* A root leaf with a quad of every layout of render/fast/hit4.h:
+ * axis-aligned, turned about x (its ea along x: a and b swapped) and
+ * about z, flat in a z plane, in general position; a sphere and an inward
+ * one around it all. */
+static rt_scene *quad_kinds_scene(void)
 {
-    (void)state;
     rt_scene *s = rt_scene_create();
     int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
     rt_scene_add(s, rt_scene_quad(s, v3(0, 0, 0), v3(100, 0, 0), v3(0, 0, 100), m));
@@ -287,12 +288,22 @@ static void test_bvh_hit4_quad_kinds(void **state)
     rt_scene_add(s, rt_scene_sphere(s, v3(60, 60, 60), 15.0, m));
     rt_scene_add(s, rt_scene_flip(s, rt_scene_sphere(s, v3(50, 50, 50), 200.0, m)));
     assert_int_equal(rt_scene_build(s), 0);
-    const rt_bvh4 *b4 = rt_scene_bvh(s)->root4;
+    return s;
+}
+
+/* quad_kinds_scene with 2 x 10^4 batches through the public entry and
+ * each instruction set. */
+static void test_bvh_hit4_quad_kinds(void **state)
+{
+    (void)state;
+    rt_scene *s = quad_kinds_scene();
+    const rt_leaf_lanes *b4 = rt_scene_leaf_lanes(s);
     assert_non_null(b4);
     assert_int_equal(b4->n_axis, 1);
     assert_int_equal(b4->n_turned, 2);
     assert_int_equal(b4->n_flat, 1);
     assert_int_equal(b4->n_other, 1);
+    assert_int_equal(b4->n_spheres, 2);
     int hits = check_hit4(s, 20000, v3(-20, -20, -20), v3(120, 120, 120), 21u);
     assert_true(hits == 4 * 20000); /* the inward sphere catches every ray */
     rt_scene_destroy(s);
@@ -326,6 +337,119 @@ static void test_bvh_matches_brute_force(void **state)
     rt_camera_params cp;
     s = rt_scene_named("book", &cp);
     check_bvh(s, 1000000, v3(-100, -100, -900), v3(655, 655, 655), 14u);
+    rt_scene_destroy(s);
+}
+
+/* Whether two hit records hold the same bits (t, point and normal
+ * compared as bits, so that -0 and +0 differ). */
+static bool same_hit(const rt_hit *a, const rt_hit *b)
+{
+    double x[7] = {a->t, a->p.x, a->p.y, a->p.z, a->normal.x, a->normal.y, a->normal.z};
+    double y[7] = {b->t, b->p.x, b->p.y, b->p.z, b->normal.x, b->normal.y, b->normal.z};
+    return memcmp(x, y, sizeof x) == 0 && a->front_face == b->front_face &&
+           a->material == b->material && a->prim == b->prim;
+}
+
+/* rt_leaf_lanes_hit1 with instruction set isa (rt_scene_hit, the
+ * renderer's entry, for RT_ISA_COUNT) against rt_bvh_hit on n_rays rays,
+ * one in eight along axes or axis planes: the same hit or miss and the
+ * same record bit for bit, the primitive included. A ray in sixteen has
+ * tmin 0 or -50 and one in sixteen a finite tmax (not through
+ * rt_scene_hit, whose range is the scene's). Returns the hits. */
+static int check_hit1_isa(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t seed, int isa)
+{
+    const char *name = isa == RT_ISA_COUNT ? "rt_scene_hit" : rt_isa_name((rt_isa)isa);
+    const rt_bvh *b = rt_scene_bvh(s);
+    const rt_prim *prims = rt_scene_prims(s);
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    int hits = 0;
+    for (int i = 0; i < n_rays; i++) {
+        rt_ray r = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
+        double tmin = 1e-3, tmax = HUGE_VAL;
+        if (isa != RT_ISA_COUNT && i % 16 == 3)
+            tmin = i % 32 == 3 ? 0.0 : -50.0;
+        if (isa != RT_ISA_COUNT && i % 16 == 5)
+            tmax = 300.0 * mc_rng_uniform(&rng);
+        rt_hit h1, h = {0};
+        bool hit = isa == RT_ISA_COUNT
+                       ? rt_scene_hit(s, r, HUGE_VAL, &h1)
+                       : rt_leaf_lanes_hit1((rt_isa)isa, rt_scene_leaf_lanes(s), b, prims, &r, tmin,
+                                            tmax, &h1);
+        if (hit != rt_bvh_hit(b, prims, &r, tmin, tmax, &h))
+            fail_msg("ray %d (%s): hit1 says %d, rt_bvh_hit %d", i, name, hit, !hit);
+        if (hit && !same_hit(&h1, &h))
+            fail_msg("ray %d (%s): t %.17g prim %d against t %.17g prim %d", i, name, h1.t, h1.prim,
+                     h.t, h.prim);
+        hits += hit;
+    }
+    return hits;
+}
+
+/* check_hit1_isa through rt_scene_hit and with every instruction set the
+ * processor has. */
+static int check_hit1(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t seed)
+{
+    int hits = check_hit1_isa(s, n_rays, lo, hi, seed, RT_ISA_COUNT);
+    for (int isa = 0; isa < RT_ISA_COUNT; isa++)
+        if (rt_isa_available((rt_isa)isa))
+            check_hit1_isa(s, n_rays, lo, hi, seed + 100u, isa);
+    return hits;
+}
+
+/* The one-ray test of the root leaf against the reference: the book scene
+ * (2.5 x 10^5 rays from all around and inside it, 5 x 10^4 from its
+ * walls), the leaf with a quad of every layout (five quads: a packet and
+ * a part of one), and a leaf of exact ties (a quad and a sphere each
+ * twice, the copies apart in prims), where the first of the primitives at
+ * the nearest distance must be the one reported. */
+static void test_bvh_hit1_matches_hit(void **state)
+{
+    (void)state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    assert_non_null(rt_scene_leaf_lanes(s));
+    int hits = check_hit1(s, 250000, v3(-100, -100, -900), v3(655, 655, 655), 22u);
+    int wall_hits = check_hit1(s, 50000, v3(0, 0, 0), v3(555, 555, 555), 23u);
+    printf("rt_leaf_lanes_hit1 = rt_bvh_hit on 3 x 10^5 rays through the book's room (%d + %d hits)\n",
+           hits, wall_hits);
+    assert_true(hits > 50000 && wall_hits > 40000);
+    rt_scene_destroy(s);
+    s = quad_kinds_scene();
+    assert_int_equal(rt_scene_leaf_lanes(s)->n_packets, 2);
+    wall_hits = check_hit1(s, 40000, v3(-20, -20, -20), v3(120, 120, 120), 24u);
+    assert_true(wall_hits == 40000); /* the inward sphere catches every ray */
+    rt_scene_destroy(s);
+    s = rt_scene_create();
+    int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
+    int m2 = rt_scene_add_material(s, rt_lambertian(v3(0.25, 0.5, 0.75)));
+    rt_object q = rt_scene_quad(s, v3(0, 0, 50), v3(100, 0, 0), v3(0, 100, 0), m);
+    rt_object q2 = rt_scene_quad(s, v3(0, 0, 50), v3(100, 0, 0), v3(0, 100, 0), m2);
+    rt_object ball = rt_scene_sphere(s, v3(50, 50, 45), 5.0, m2), ball2 = rt_scene_sphere(s, v3(50, 50, 45), 5.0, m);
+    /* Between them quads as wide as the room's (so that the SAH keeps
+     * one leaf): in prims ball 0, q 2, ball2 4, q2 6, eight quads, q
+     * the second and q2 the fifth, so that q2 is in a lower lane than q
+     * if the quads went to lanes in turn. */
+    rt_object items[] = {ball, -1, q, -1, ball2, -1, q2, -1, -1, -1};
+    for (int i = 0, z = 51; i < 10; i++)
+        rt_scene_add(s, items[i] >= 0 ? items[i]
+                                      : rt_scene_quad(s, v3(0, 0, z++), v3(100, 0, 0), v3(0, 100, 0), m));
+    assert_int_equal(rt_scene_build(s), 0);
+    assert_non_null(rt_scene_leaf_lanes(s));
+    hits = check_hit1(s, 40000, v3(0, 0, -20), v3(100, 100, 120), 25u);
+    /* Every hit on a copy is a tie, won by the first: ball and q, never
+     * ball2 or q2. */
+    mc_rng rng = mc_rng_derive(26u, 0u);
+    int ties = 0;
+    for (int i = 0; i < 10000; i++) {
+        rt_hit h;
+        if (!rt_scene_hit(s, random_ray(&rng, v3(0, 0, -20), v3(100, 100, 120)), HUGE_VAL, &h))
+            continue;
+        assert_true(h.prim != 4 && h.prim != 6);
+        ties += h.prim == 0 || h.prim == 2;
+    }
+    printf("rt_leaf_lanes_hit1 = rt_bvh_hit on 8 x 10^4 rays through two leaves (%d + %d hits; "
+           "%d ties in 10^4 rays)\n", wall_hits, hits, ties);
+    assert_true(hits > 5000 && ties > 1000);
     rt_scene_destroy(s);
 }
 
@@ -398,6 +522,7 @@ int main(void)
         cmocka_unit_test(test_bvh_matches_brute_force),
         cmocka_unit_test(test_bvh_hit4_matches_hit),
         cmocka_unit_test(test_bvh_hit4_quad_kinds),
+        cmocka_unit_test(test_bvh_hit1_matches_hit),
         cmocka_unit_test(test_bvh_degenerate_inputs),
         cmocka_unit_test(test_camera_geometry),
         cmocka_unit_test(test_scene_errors),

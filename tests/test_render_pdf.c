@@ -8,7 +8,7 @@
 #include "mc/rng.h"
 #include "pdf/pdf.h"
 #include "render/lights.h"
-#include "render/lights4.h"
+#include "render/fast/lights4.h"
 #include "render/render.h"
 #include "render/scenes.h"
 #include "samplers/sphere.h"
@@ -84,15 +84,15 @@ static void test_lights_match_pdf_objects(void **state)
  * (random, generated toward the lights, and along a quad's plane, where
  * its density divides by 0). Some origins are the centre of a sphere
  * light (dist 0) or inside it. With the instruction set isa. */
-static void check_lights4(rt_lights4_isa isa, const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
+static void check_lights4(rt_isa isa, const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed)
 {
     mc_rng rng = mc_rng_derive(seed, 0u);
     const rt_light *fast = rt_scene_lights(s);
     int n = rt_scene_light_count(s);
     for (int it = 0; it < 25000; it++) {
-        vec3 o[RT_LIGHTS4_LANES], d[RT_LIGHTS4_LANES];
-        rt_lights_at one[RT_LIGHTS4_LANES];
-        for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
+        vec3 o[RT_LANES], d[RT_LANES];
+        rt_lights_at one[RT_LANES];
+        for (int k = 0; k < RT_LANES; k++) {
             o[k] = v3(lo.x + (hi.x - lo.x) * mc_rng_uniform(&rng), lo.y + (hi.y - lo.y) * mc_rng_uniform(&rng),
                       lo.z + (hi.z - lo.z) * mc_rng_uniform(&rng));
             const rt_light *l = &fast[mc_rng_bounded(&rng, (uint32_t)n)];
@@ -101,8 +101,8 @@ static void check_lights4(rt_lights4_isa isa, const rt_scene *s, vec3 lo, vec3 h
             rt_lights_prepare(&one[k], fast, n, o[k]);
         }
         rt_lights4 at4;
-        rt_lights4_prepare_isa(isa, &at4, fast, n, o);
-        for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
+        rt_lights4_prepare(isa, &at4, fast, n, o);
+        for (int k = 0; k < RT_LANES; k++) {
             for (int i = 0; i < n; i++) {
                 if (fast[i].kind == RT_PRIM_QUAD) {
                     assert_true(at4.num[i][k] == one[k].num[i]);
@@ -128,9 +128,9 @@ static void check_lights4(rt_lights4_isa isa, const rt_scene *s, vec3 lo, vec3 h
                 d[k] = l->kind == RT_PRIM_QUAD ? vec3_normalize(l->u) : ga;
             }
         }
-        double v[RT_LIGHTS4_LANES];
-        rt_lights4_value_isa(isa, &at4, d, v);
-        for (int k = 0; k < RT_LIGHTS4_LANES; k++)
+        double v[RT_LANES];
+        rt_lights4_value(isa, &at4, d, v);
+        for (int k = 0; k < RT_LANES; k++)
             if (!(v[k] == rt_lights_at_value(&one[k], d[k])))
                 fail_msg("isa %d batch %d lane %d: rt_lights4_value %.17g, rt_lights_at_value %.17g", (int)isa,
                          it, k, v[k], rt_lights_at_value(&one[k], d[k]));
@@ -138,20 +138,19 @@ static void check_lights4(rt_lights4_isa isa, const rt_scene *s, vec3 lo, vec3 h
 }
 
 /* Every instruction set this processor has (the renderer's, from
- * rt_lights4_isa_best, among them), on the book's lights (n = 2, whose
+ * rt_isa_best, among them), on the book's lights (n = 2, whose
  * average is a multiplication by 1/2) and on five lights (a division). */
 static void test_lights4_match_lights(void **state)
 {
     (void)state;
-    static const char *const isa_names[3] = {"portable", "AVX2", "AVX-512VL"};
     int ran = 0;
     bool best_ran = false;
-    for (int isa = RT_LIGHTS4_PORTABLE; isa <= RT_LIGHTS4_AVX512; isa++) {
-        if (!rt_lights4_isa_available((rt_lights4_isa)isa))
+    for (int isa = 0; isa < RT_ISA_COUNT; isa++) {
+        if (!rt_isa_available((rt_isa)isa))
             continue;
         rt_camera_params cp;
         rt_scene *s = rt_scene_named("book", &cp);
-        check_lights4((rt_lights4_isa)isa, s, v3(0, 0, 0), v3(555, 555, 555), 34u);
+        check_lights4((rt_isa)isa, s, v3(0, 0, 0), v3(555, 555, 555), 34u);
         rt_scene_destroy(s);
         /* Five lights of both kinds in mixed order, of very different sizes. */
         s = rt_scene_create();
@@ -163,11 +162,12 @@ static void test_lights4_match_lights(void **state)
         rt_scene_add_light(s, rt_scene_sphere(s, v3(-20, 30, 8), 1e-6, white));
         rt_scene_add_light(s, rt_scene_quad(s, v3(8, -3, 2), v3(0, 6, 1), v3(-2, 0, 5), white));
         assert_int_equal(rt_scene_build(s), 0);
-        check_lights4((rt_lights4_isa)isa, s, v3(-30, -10, -30), v3(30, 40, 30), 35u);
+        check_lights4((rt_isa)isa, s, v3(-30, -10, -30), v3(30, 40, 30), 35u);
         rt_scene_destroy(s);
-        printf("rt_lights4 (%s) = render/lights.h on 2 x 10^5 origins and directions\n", isa_names[isa]);
+        printf("rt_lights4 (%s) = render/lights.h on 2 x 10^5 origins and directions\n",
+               rt_isa_name((rt_isa)isa));
         ran++;
-        best_ran |= isa == (int)rt_lights4_isa_best();
+        best_ran |= isa == (int)rt_isa_best();
     }
     assert_true(ran >= 1 && best_ran);
 }

@@ -1,5 +1,5 @@
-/* render/bvh4.c - a root leaf against four rays at once (rt_bvh_hit4). */
-#include "render/bvh4.h"
+/* render/fast/hit4.c - a root leaf against four rays at once. */
+#include "render/fast/hit4.h"
 
 #include <stddef.h>
 #include <stdlib.h>
@@ -31,11 +31,20 @@ static int turned_axis(const double n[3], const double ea[3], const double eb[3]
     return -1;
 }
 
-#define EACH_LANE for (int l = 0; l < RT_BVH_LANES; l++)
+#define EACH_LANE for (int l = 0; l < RT_LANES; l++)
+
+/* The thirteen numbers of rt_quad_hit_distance in rt_quad_lanes's order:
+ * normal, plane, corner, ea, eb. */
+static void quad_fields(const rt_quad *s, double f[13])
+{
+    const double v[13] = {s->normal.x, s->normal.y, s->normal.z, s->plane, s->q.x, s->q.y, s->q.z,
+                          s->ea.x, s->ea.y, s->ea.z, s->eb.x, s->eb.y, s->eb.z};
+    memcpy(f, v, sizeof v);
+}
 
 /* Appends quad s (prims[prim]) to the layout of its kind. The edge test
  * is symmetric in a and b, so a turned quad may swap them. */
-static void lay_out_quad(rt_bvh4 *b4, const rt_quad *s, int64_t prim)
+static void lay_out_quad(rt_leaf_lanes *b4, const rt_quad *s, int64_t prim)
 {
     const double n[3] = {s->normal.x, s->normal.y, s->normal.z}, o[3] = {s->q.x, s->q.y, s->q.z};
     const double ea[3] = {s->ea.x, s->ea.y, s->ea.z}, eb[3] = {s->eb.x, s->eb.y, s->eb.z};
@@ -62,8 +71,8 @@ static void lay_out_quad(rt_bvh4 *b4, const rt_quad *s, int64_t prim)
               w->qj[l] = o[tj], w->qk[l] = o[kk], w->ai[l] = a[i], w->ak[l] = a[kk], w->bj[l] = b[tj],
               w->prim[l] = prim;
     } else {
-        const double f[13] = {n[0], n[1], n[2], s->plane, o[0], o[1], o[2],
-                              ea[0], ea[1], ea[2], eb[0], eb[1], eb[2]};
+        double f[13];
+        quad_fields(s, f);
         rt_quad_lanes *w = &b4->other[b4->n_other++];
         EACH_LANE {
             for (int g = 0; g < 13; g++)
@@ -73,37 +82,65 @@ static void lay_out_quad(rt_bvh4 *b4, const rt_quad *s, int64_t prim)
     }
 }
 
-rt_bvh4 *rt_bvh4_create(const rt_prim *prims, int n, int n_quads)
+/* The packets of the one-ray test (hit4.h): quad number c of the leaf
+ * (c-th in prims) goes to lane c / n_packets of row c % n_packets. */
+static void pack_quads(rt_leaf_lanes *b4, const rt_prim *prims, int n)
+{
+    int nq = 0;
+    for (int i = 0; i < n; i++)
+        nq += prims[i].kind == RT_PRIM_QUAD;
+    b4->n_packets = (nq + RT_LANES - 1) / RT_LANES;
+    memset(b4->packets, 0, (size_t)b4->n_packets * sizeof *b4->packets);
+    for (int p = 0; p < b4->n_packets; p++)
+        EACH_LANE b4->packets[p].prim[l] = -1;
+    for (int i = 0, c = 0; i < n; i++) {
+        if (prims[i].kind != RT_PRIM_QUAD)
+            continue;
+        double f[13];
+        quad_fields(&prims[i].as.quad, f);
+        rt_quad_lanes *w = &b4->packets[c % b4->n_packets];
+        int l = c++ / b4->n_packets;
+        for (int g = 0; g < 13; g++)
+            w->f[g][l] = f[g];
+        w->prim[l] = i;
+    }
+}
+
+rt_leaf_lanes *rt_leaf_lanes_create(const rt_prim *prims, int n)
 {
     _Static_assert(sizeof(rt_quad_axis) % 64 == 0 && sizeof(rt_quad_lanes) % 64 == 0 &&
                        sizeof(rt_quad_flat) % 64 == 0 && sizeof(rt_quad_turned) % 64 == 0,
                    "rows of 32-byte lanes stay aligned from one quad to the next");
-    rt_bvh4 *b4 = calloc(1, sizeof *b4);
+    rt_leaf_lanes *b4 = calloc(1, sizeof *b4);
     if (!b4)
         return NULL;
     /* Sizes rounded up to the alignment, as aligned_alloc wants. */
-    size_t nq = (size_t)(n_quads > 0 ? n_quads : 1), rows = ((size_t)n + 1) / 2 * 2;
+    size_t nq = (size_t)(n > 0 ? n : 1), rows = ((size_t)n + 1) / 2 * 2;
     b4->axis = aligned_alloc(64, nq * sizeof *b4->axis);
     b4->turned = aligned_alloc(64, nq * sizeof *b4->turned);
     b4->flat = aligned_alloc(64, nq * sizeof *b4->flat);
     b4->other = aligned_alloc(64, nq * sizeof *b4->other);
+    b4->spheres = malloc(nq * sizeof *b4->spheres);
     b4->rows = aligned_alloc(64, rows * sizeof *b4->rows);
-    if (!b4->axis || !b4->turned || !b4->flat || !b4->other || !b4->rows) {
-        rt_bvh4_destroy(b4);
+    b4->packets = aligned_alloc(64, nq * sizeof *b4->packets);
+    if (!b4->axis || !b4->turned || !b4->flat || !b4->other || !b4->spheres || !b4->rows ||
+        !b4->packets) {
+        rt_leaf_lanes_destroy(b4);
         return NULL;
     }
     memset(b4->axis, 0, nq * sizeof *b4->axis);
     memset(b4->turned, 0, nq * sizeof *b4->turned);
     memset(b4->flat, 0, nq * sizeof *b4->flat);
-    b4->n = n, b4->n_quads = n_quads;
+    pack_quads(b4, prims, n);
     for (int i = 0; i < n; i++) {
-        if (i < n_quads) {
+        if (prims[i].kind == RT_PRIM_QUAD) {
             const rt_quad *s = &prims[i].as.quad;
             lay_out_quad(b4, s, i);
             memcpy(b4->rows[i], (const double[4]){s->normal.x, s->normal.y, s->normal.z, 0.0},
                    sizeof b4->rows[i]);
         } else {
             const rt_sphere *s = &prims[i].as.sphere;
+            b4->spheres[b4->n_spheres++] = i;
             memcpy(b4->rows[i], (const double[4]){s->center.x, s->center.y, s->center.z, s->orient},
                    sizeof b4->rows[i]);
         }
@@ -111,7 +148,7 @@ rt_bvh4 *rt_bvh4_create(const rt_prim *prims, int n, int n_quads)
     return b4;
 }
 
-void rt_bvh4_destroy(rt_bvh4 *b4)
+void rt_leaf_lanes_destroy(rt_leaf_lanes *b4)
 {
     if (!b4)
         return;
@@ -119,19 +156,24 @@ void rt_bvh4_destroy(rt_bvh4 *b4)
     free(b4->turned);
     free(b4->flat);
     free(b4->other);
+    free(b4->spheres);
     free(b4->rows);
+    free(b4->packets);
     free(b4);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-#define RT_BVH4_X86 1
+/* Hand-written AVX2: with the rays traced one by one instead (the
+ * portable path), make bench's book render took 20-45% longer
+ * (docs/performance.md), far above the 5% that a second copy of the
+ * quad and sphere tests must pay for. */
 #include <immintrin.h>
 
-/* Exactness. Every lane computes rt_quad_t's and rt_sphere_t's
- * expressions in the same order, without FMA (a fused multiply-add rounds
- * once where the scalar code rounds twice; neither target below enables
- * it), so that its distance is the scalar one bit for bit. The layouts
- * of bvh4.h leave out terms of rt_quad_t's dot products whose factor from
+/* Exactness. Every lane computes rt_quad_hit_distance's and
+ * rt_sphere_hit_distance's expressions in the same order, without FMA (a
+ * fused multiply-add rounds once where the scalar code rounds twice; the
+ * avx2 target does not enable it), so that its distance is the scalar one
+ * bit for bit. The layouts of hit4.h leave out terms of rt_quad_hit_distance's dot products whose factor from
  * the quad is exactly zero: such a term is a zero times a finite number,
  * a signed zero, and adding a signed zero leaves a nonzero sum unchanged
  * and a zero sum zero, at most of the other sign. No decision sees that
@@ -144,7 +186,8 @@ void rt_bvh4_destroy(rt_bvh4 *b4)
  * normal n_k = +-1 (to rounding), where t d_k = (plane - n_k o_k) / n_k to
  * rounding, as large as the scene's coordinates. Every other coordinate
  * of h meets a nonzero factor in a or b, so an infinite or NaN one makes
- * that sum infinite or NaN and the edge test fails, as in rt_quad_t. */
+ * that sum infinite or NaN and the edge test fails, as in
+ * rt_quad_hit_distance. */
 
 /* The four rays, coordinate by coordinate. */
 typedef struct lanes {
@@ -164,7 +207,7 @@ typedef struct nearest {
 #define MUL _mm256_mul_pd
 
 /* BEGIN SNIPPET quad_axis_lanes */
-/* (o + t d)_c - q_c: a coordinate of h in rt_quad_t. */
+/* (o + t d)_c - q_c: a coordinate of h in rt_quad_hit_distance. */
 AVX2 __m256d h_at(const lanes *L, __m256d t, int c, const double *q)
 {
     return SUB(ADD(L->o[c], MUL(t, L->d[c])), LOAD(q));
@@ -203,7 +246,7 @@ AVX2 __m256d quad_flat(const lanes *L, const rt_quad_flat *w, __m256d *a, __m256
     return t;
 }
 
-/* rt_quad_t in full; q->f in rt_quad_packet's order. */
+/* rt_quad_hit_distance in full; q->f in rt_quad_lanes's order. */
 AVX2 __m256d quad_other(const lanes *L, const rt_quad_lanes *q, __m256d *a, __m256d *b)
 {
     const __m256d *o = L->o, *d = L->d;
@@ -216,7 +259,7 @@ AVX2 __m256d quad_other(const lanes *L, const rt_quad_lanes *q, __m256d *a, __m2
     return t;
 }
 
-/* rt_sphere_t: the nearer root if it is beyond tmin, else the farther
+/* rt_sphere_hit_distance: the nearer root if it is beyond tmin, else the farther
  * (t1 = h - sq <= h + sq = t2 also in floating point); *disc gets the
  * discriminant, whose sign says whether the roots are real. */
 AVX2 __m256d sphere(const lanes *L, const rt_sphere *s, __m256d lo, __m256d *disc)
@@ -233,10 +276,10 @@ AVX2 __m256d sphere(const lanes *L, const rt_sphere *s, __m256d lo, __m256d *dis
 
 /* BEGIN SNIPPET keep_nearest */
 /* Keeps t where the lanes of `in` (t > tmin, the point inside) are nearer
- * than the best so far: t < best, the last condition of rt_quad_t, is
+ * than the best so far: t < best, the last condition of rt_quad_hit_distance, is
  * left to a minimum, so that the chain from one primitive to the next is
  * that one instruction. min(x, y) is x < y ? x : y, which keeps y on a
- * tie as rt_quad_t's strict t < tmax does. */
+ * tie as rt_quad_hit_distance's strict t < tmax does. */
 AVX2 void keep(nearest *nb, __m256d t, __m256d in, __m256d prim)
 {
     __m256d tm = _mm256_blendv_pd(_mm256_set1_pd(HUGE_VAL), t, in);
@@ -257,7 +300,7 @@ AVX2 __m256d inside(__m256d t, __m256d a, __m256d b, __m256d lo)
 
 /* The rays r[0..3] as lanes: a 4 x 4 transpose of (o, d.x) and a 4 x 2
  * one of (d.y, d.z). */
-AVX2 lanes load_rays(const rt_ray r[RT_BVH_LANES])
+AVX2 lanes load_rays(const rt_ray r[RT_LANES])
 {
     _Static_assert(sizeof(rt_ray) == 6 * sizeof(double), "rt_ray is o then d, packed");
     const double *p = (const double *)(const void *)r;
@@ -301,15 +344,15 @@ AVX2 void sphere_outward(const __m256d p[3], const __m256d c[3], __m256d orient,
  * outward normal, rt_hit_set_face's side test and flip, lane by lane in
  * the scalar code's order. A lane that missed gets primitive 0's record,
  * which the caller may not read. */
-AVX2 unsigned records(const rt_bvh4 *b4, const rt_prim *prims, const lanes *L, nearest nb,
-                      rt_hit h[RT_BVH_LANES])
+AVX2 unsigned records(const rt_leaf_lanes *b4, const rt_prim *prims, const lanes *L, nearest nb,
+                      rt_hit h[RT_LANES])
 {
     _Static_assert(offsetof(rt_hit, t) == 0 && offsetof(rt_hit, p) == 8 && offsetof(rt_hit, normal) == 32 &&
                        offsetof(rt_hit, front_face) >= 56 && offsetof(rt_hit, material) >= 56 &&
                        offsetof(rt_hit, prim) >= 56,
                    "t, p and normal are the first 7 doubles of rt_hit, the rest follows");
     __m256i hit = _mm256_cmpgt_epi64(_mm256_castpd_si256(nb.i), _mm256_set1_epi64x(-1));
-    int64_t is[RT_BVH_LANES];
+    int64_t is[RT_LANES];
     _mm256_storeu_si256((__m256i *)(void *)is, _mm256_and_si256(_mm256_castpd_si256(nb.i), hit));
     const double *w0 = b4->rows[is[0]], *w1 = b4->rows[is[1]], *w2 = b4->rows[is[2]], *w3 = b4->rows[is[3]];
     __m256d a = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_load_pd(w0)), _mm_load_pd(w2), 1);
@@ -336,7 +379,7 @@ AVX2 unsigned records(const rt_bvh4 *b4, const rt_prim *prims, const lanes *L, n
     transpose(_mm256_xor_pd(out[0], flip), _mm256_xor_pd(out[1], flip), _mm256_xor_pd(out[2], flip),
               flip, nr);
     unsigned fb = (unsigned)_mm256_movemask_pd(front);
-    for (int k = 0; k < RT_BVH_LANES; k++) {
+    for (int k = 0; k < RT_LANES; k++) {
         char *hk = (char *)(void *)&h[k];
         _mm256_storeu_pd((double *)(void *)hk, tp[k]);
         _mm256_storeu_pd((double *)(void *)(hk + offsetof(rt_hit, normal)), nr[k]);
@@ -358,9 +401,9 @@ AVX2 unsigned records(const rt_bvh4 *b4, const rt_prim *prims, const lanes *L, n
 /* The root leaf against the four rays, each lane keeping its nearest
  * hit; then the records. */
 /* BEGIN SNIPPET hit4_avx2 */
-__attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, const rt_prim *prims,
-                                                         const rt_ray r[RT_BVH_LANES], double tmin,
-                                                         double tmax, rt_hit h[RT_BVH_LANES])
+__attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_leaf_lanes *b4, const rt_prim *prims,
+                                                         const rt_ray r[RT_LANES], double tmin,
+                                                         double tmax, rt_hit h[RT_LANES])
 {
     lanes L = load_rays(r);
     const __m256d lo = _mm256_set1_pd(tmin);
@@ -369,7 +412,8 @@ __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, con
     QUADS(n_turned, turned, quad_turned, inside, keep)
     QUADS(n_flat, flat, quad_flat, inside, keep)
     QUADS(n_other, other, quad_other, inside, keep)
-    for (int i = b4->n_quads; i < b4->n; i++) {
+    for (int j = 0; j < b4->n_spheres; j++) {
+        int i = b4->spheres[j];
         __m256d disc, t = sphere(&L, &prims[i].as.sphere, lo, &disc);
         __m256d in = _mm256_and_pd(_mm256_cmp_pd(disc, _mm256_setzero_pd(), _CMP_GE_OQ),
                                    _mm256_cmp_pd(t, lo, _CMP_GT_OQ));
@@ -379,87 +423,85 @@ __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_bvh4 *b4, con
 }
 /* END SNIPPET hit4_avx2 */
 
-/* The same with AVX-512's mask registers (still four lanes of 256 bits,
- * the same arithmetic): each comparison is masked by the previous ones,
- * which makes the conjunction without vector ANDs, and the blends read
- * the mask. Processors with AVX-512 have FMA, but only explicit FMA
- * intrinsics would use it here: GCC's avx512f target does not enable
- * FMA, and clang contracts a * b + c only within one C expression, which
- * the intrinsics never are. */
-#define AVX512 __attribute__((target("avx2,avx512f,avx512vl"), always_inline)) static inline
-
-AVX512 __mmask8 inside512(__m256d t, __m256d a, __m256d b, __m256d lo)
+/* BEGIN SNIPPET hit1_avx2 */
+/* One ray against the root leaf: the ray in every lane, four quads in
+ * each packet (quad_other: the full test, valid for any tmin), each lane
+ * keeping its nearest; then the nearest lane, then the spheres. Every
+ * quad of a lane comes before those of the next lane (hit4.h) and a lane
+ * keeps the first of equal distances, so the lowest lane holding the
+ * minimum holds the first quad at that distance, as in rt_bvh_hit; a
+ * sphere wins a tie only from a later primitive. */
+__attribute__((target("avx2"))) static bool hit1_avx2(const rt_leaf_lanes *b4, const rt_prim *prims,
+                                                     const rt_ray *r, double tmin, double tmax,
+                                                     rt_hit *h)
 {
-    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
-    __mmask8 in = _mm256_cmp_pd_mask(a, zero, _CMP_GE_OQ);
-    in = _mm256_mask_cmp_pd_mask(in, a, one, _CMP_LE_OQ);
-    in = _mm256_mask_cmp_pd_mask(in, b, zero, _CMP_GE_OQ);
-    in = _mm256_mask_cmp_pd_mask(in, b, one, _CMP_LE_OQ);
-    return _mm256_mask_cmp_pd_mask(in, t, lo, _CMP_GT_OQ);
-}
-
-/* keep with masks. */
-AVX512 void keep512(nearest *nb, __m256d t, __mmask8 in, __m256d prim)
-{
-    __m256d tm = _mm256_mask_blend_pd(in, _mm256_set1_pd(HUGE_VAL), t);
-    nb->i = _mm256_mask_blend_pd(_mm256_cmp_pd_mask(tm, nb->t, _CMP_LT_OQ), nb->i, prim);
-    nb->t = _mm256_min_pd(tm, nb->t);
-}
-
-__attribute__((target("avx2,avx512f,avx512vl"))) static unsigned
-hit4_avx512(const rt_bvh4 *b4, const rt_prim *prims, const rt_ray r[RT_BVH_LANES], double tmin,
-            double tmax, rt_hit h[RT_BVH_LANES])
-{
-    lanes L = load_rays(r);
+    lanes L = {{_mm256_set1_pd(r->origin.x), _mm256_set1_pd(r->origin.y), _mm256_set1_pd(r->origin.z)},
+               {_mm256_set1_pd(r->dir.x), _mm256_set1_pd(r->dir.y), _mm256_set1_pd(r->dir.z)}};
     const __m256d lo = _mm256_set1_pd(tmin);
     nearest nb = {_mm256_set1_pd(tmax), _mm256_castsi256_pd(_mm256_set1_epi64x(-1))};
-    QUADS(n_axis, axis, quad_axis, inside512, keep512)
-    QUADS(n_turned, turned, quad_turned, inside512, keep512)
-    QUADS(n_flat, flat, quad_flat, inside512, keep512)
-    QUADS(n_other, other, quad_other, inside512, keep512)
-    for (int i = b4->n_quads; i < b4->n; i++) {
-        __m256d disc, t = sphere(&L, &prims[i].as.sphere, lo, &disc);
-        __mmask8 in = _mm256_mask_cmp_pd_mask(_mm256_cmp_pd_mask(disc, _mm256_setzero_pd(), _CMP_GE_OQ),
-                                              t, lo, _CMP_GT_OQ);
-        keep512(&nb, t, in, _mm256_castsi256_pd(_mm256_set1_epi64x(i)));
+    QUADS(n_packets, packets, quad_other, inside, keep)
+    __m256d m2 = _mm256_min_pd(nb.t, _mm256_permute_pd(nb.t, 0x5));
+    __m256d m4 = _mm256_min_pd(m2, _mm256_permute2f128_pd(m2, m2, 0x1));
+    /* No quad hit: every lane holds tmax and -1. */
+    unsigned eq = (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(nb.t, m4, _CMP_EQ_OQ));
+    int64_t is[RT_LANES];
+    _mm256_storeu_si256((__m256i *)(void *)is, _mm256_castpd_si256(nb.i));
+    double best = _mm256_cvtsd_f64(m4);
+    int best_i = (int)is[__builtin_ctz(eq | 0x10u) & 3];
+    for (int j = 0; j < b4->n_spheres; j++) {
+        int i = b4->spheres[j];
+        __m256d disc, t4 = sphere(&L, &prims[i].as.sphere, lo, &disc);
+        double t = _mm256_cvtsd_f64(t4);
+        int closer = (_mm256_cvtsd_f64(disc) >= 0.0) & (t > tmin) &
+                     ((t < best) | ((t == best) & (i < best_i)));
+        best_i = closer ? i : best_i;
+        best = closer ? t : best;
     }
-    return records(b4, prims, &L, nb, h);
+    if (best_i < 0)
+        return false;
+    rt_prim_hit_record(&prims[best_i], best_i, *r, best, h);
+    return true;
 }
+/* END SNIPPET hit1_avx2 */
 #endif
 
-rt_bvh4_isa rt_bvh4_isa_best(void)
+/* BEGIN SNIPPET hit4_dispatch */
+unsigned rt_leaf_lanes_hit(rt_isa isa, const rt_leaf_lanes *ll, const rt_bvh *bvh,
+                           const rt_prim *prims, const rt_ray r[RT_LANES], double tmin,
+                           double tmax, rt_hit h[RT_LANES])
 {
-#ifdef RT_BVH4_X86
-    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl"))
-        return RT_BVH4_AVX512;
-    if (__builtin_cpu_supports("avx2"))
-        return RT_BVH4_AVX2;
-#endif
-    return RT_BVH4_SCALAR;
-}
-
-/* BEGIN SNIPPET bvh4_dispatch */
-unsigned rt_bvh4_hit(rt_bvh4_isa isa, const rt_bvh *bvh, const rt_prim *prims,
-                     const rt_ray r[RT_BVH_LANES], double tmin, double tmax, rt_hit h[RT_BVH_LANES])
-{
-#ifdef RT_BVH4_X86
+#if defined(__x86_64__) && defined(__GNUC__)
     /* tmin >= 0: see "Exactness" above. */
-    if (bvh->root4 && tmin >= 0.0 && isa == RT_BVH4_AVX512)
-        return hit4_avx512(bvh->root4, prims, r, tmin, tmax, h);
-    if (bvh->root4 && tmin >= 0.0 && isa == RT_BVH4_AVX2)
-        return hit4_avx2(bvh->root4, prims, r, tmin, tmax, h);
+    if (ll && tmin >= 0.0 && isa == RT_ISA_AVX2)
+        return hit4_avx2(ll, prims, r, tmin, tmax, h);
 #else
     (void)isa;
+    (void)ll;
 #endif
     unsigned mask = 0;
-    for (int k = 0; k < RT_BVH_LANES; k++)
+    for (int k = 0; k < RT_LANES; k++)
         mask |= (unsigned)rt_bvh_hit(bvh, prims, &r[k], tmin, tmax, &h[k]) << k;
     return mask;
 }
-/* END SNIPPET bvh4_dispatch */
+/* END SNIPPET hit4_dispatch */
 
-unsigned rt_bvh_hit4(const rt_bvh *bvh, const rt_prim *prims, const rt_ray r[RT_BVH_LANES],
-                     double tmin, double tmax, rt_hit h[RT_BVH_LANES])
+bool rt_leaf_lanes_hit1(rt_isa isa, const rt_leaf_lanes *ll, const rt_bvh *bvh,
+                        const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
+                        rt_hit *h)
 {
-    return rt_bvh4_hit(rt_bvh4_isa_best(), bvh, prims, r, tmin, tmax, h);
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (ll && isa == RT_ISA_AVX2)
+        return hit1_avx2(ll, prims, r, tmin, tmax, h);
+#else
+    (void)isa;
+    (void)ll;
+#endif
+    return rt_bvh_hit(bvh, prims, r, tmin, tmax, h);
+}
+
+unsigned rt_scene_hit4(const rt_scene *s, rt_isa isa, const rt_ray r[RT_LANES], double tmax,
+                       rt_hit h[RT_LANES])
+{
+    return rt_leaf_lanes_hit(isa, rt_scene_leaf_lanes(s), rt_scene_bvh(s), rt_scene_prims(s), r,
+                             rt_scene_t_min(s), tmax, h);
 }

@@ -1,6 +1,6 @@
-/* render/lights4.c - render/lights.h's densities for four origins: lane by
- * lane, and in AVX2 vectors where the processor has them. */
-#include "render/lights4.h"
+/* render/fast/lights4.c - render/lights.h's densities for four origins:
+ * lane by lane, and in AVX2 vectors. */
+#include "render/fast/lights4.h"
 
 #include <math.h>
 
@@ -51,12 +51,14 @@ vec3 rt_lights4_generate(const rt_lights4 *at, int k, mc_rng *rng)
 
 /* The list's average sum / n. For n a power of two, 1 / n is exact and
  * sum * (1 / n) is the correctly rounded sum / n as the quotient is: the
- * same bits for a multiplication instead of a division (on the path from
- * the direction to the throughput, 13 cycles of latency become 3). */
+ * same bits for a multiplication instead of a division. */
 static bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-#define RT_LIGHTS4_X86 1
+/* Hand-written AVX2: with render/lights.h lane by lane instead (the
+ * portable path), make bench's book render took 35% longer
+ * (docs/performance.md), far above the 5% that a vector copy of the
+ * densities must pay for. */
 #include <immintrin.h>
 
 #define AVX2_INLINE __attribute__((target("avx2"), always_inline)) static inline
@@ -100,7 +102,7 @@ __attribute__((target("avx2"))) static void prepare_avx2(rt_lights4 *at, const v
             _mm256_storeu_pd(at->num[i], num);
             continue;
         }
-        /* rt_light_cone_axis: axis = center - origin, dist_sq = |axis|^2 */
+        /* pdf_sphere_cone: axis = center - origin, dist_sq = |axis|^2 */
         __m256d vx = _mm256_sub_pd(_mm256_set1_pd(l->center.x), ox),
                 vy = _mm256_sub_pd(_mm256_set1_pd(l->center.y), oy),
                 vz = _mm256_sub_pd(_mm256_set1_pd(l->center.z), oz);
@@ -130,10 +132,7 @@ __attribute__((target("avx2"))) static void prepare_avx2(rt_lights4 *at, const v
     }
 }
 
-/* The helpers below are AVX2 and inline into the AVX-512 functions too
- * (a callee whose instruction set is a subset of its caller's). */
-
-/* rt_light_quad_value's s = w . (q x v) and t = w . (u x q) at the point
+/* pdf_quad_density's s = w . (q x v) and t = w . (u x q) at the point
  * q = (origin + r d) - corner of the quad's plane. */
 __attribute__((target("avx2"))) static inline void quad_st(const rt_light *l, __m256d ox,
                                                            __m256d oy, __m256d oz, __m256d dx,
@@ -172,7 +171,7 @@ AVX2_INLINE __m256d cone_dot(const rt_lights4 *at, int i, __m256d dx, __m256d dy
                 _mm256_loadu_pd(at->az[i]));
 }
 
-/* rt_light_quad_value's distance r = num / denom along d, denom = normal . d. */
+/* pdf_quad_density's distance r = num / denom along d, denom = normal . d. */
 AVX2_INLINE __m256d quad_r(const rt_lights4 *at, int i, __m256d dx, __m256d dy, __m256d dz,
                            __m256d *denom)
 {
@@ -201,7 +200,7 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
             sum = _mm256_add_pd(sum, _mm256_andnot_pd(off, _mm256_loadu_pd(at->cone[i])));
             continue;
         }
-        /* rt_light_quad_value: denom = normal . d, r = num / denom */
+        /* pdf_quad_density: denom = normal . d, r = num / denom */
         __m256d denom, r = quad_r(at, i, dx, dy, dz, &denom);
         __m256d s, t;
         quad_st(l, ox, oy, oz, dx, dy, dz, r, &s, &t);
@@ -220,175 +219,44 @@ __attribute__((target("avx2"))) static void value_avx2(const rt_lights4 *at, con
     _mm256_storeu_pd(out, list_average(sum, at->n));
 }
 
-/* prepare_avx2 and value_avx2 with the comparisons in mask registers: a
- * selection or a zeroing becomes the mask of the operation that produces
- * the value (a masked square root, division or multiplication), and the
- * tests of a quad's value chain through masked comparisons instead of
- * vector ands. Lanes that a mask leaves out get exactly the bits the AVX2
- * selection gives them (+0 is the all-zero pattern, like an and with a
- * false mask); the arithmetic of the lanes kept is the same. Adding a
- * masked-off density as a lane left unchanged instead of as + 0 is the
- * same too: every partial sum is +0 or positive (densities are >= 0,
- * never -0), and s + 0 = s for those. */
-__attribute__((target("avx2,avx512f,avx512vl"))) static void prepare_avx512(rt_lights4 *at,
-                                                                          const vec3 origin[4])
-{
-    __m256d ox, oy, oz;
-    lanes_of(origin, &ox, &oy, &oz);
-    _mm256_storeu_pd(at->ox, ox);
-    _mm256_storeu_pd(at->oy, oy);
-    _mm256_storeu_pd(at->oz, oz);
-    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
-    for (int i = 0; i < at->n; i++) {
-        const rt_light *l = &at->lights[i];
-        if (l->kind == RT_PRIM_QUAD) {
-            __m256d num = dot3(_mm256_set1_pd(l->normal.x), _mm256_set1_pd(l->normal.y),
-                                      _mm256_set1_pd(l->normal.z), _mm256_sub_pd(_mm256_set1_pd(l->q.x), ox),
-                                      _mm256_sub_pd(_mm256_set1_pd(l->q.y), oy),
-                                      _mm256_sub_pd(_mm256_set1_pd(l->q.z), oz));
-            _mm256_storeu_pd(at->num[i], num);
-            continue;
-        }
-        __m256d vx = _mm256_sub_pd(_mm256_set1_pd(l->center.x), ox),
-                vy = _mm256_sub_pd(_mm256_set1_pd(l->center.y), oy),
-                vz = _mm256_sub_pd(_mm256_set1_pd(l->center.z), oz);
-        __m256d dist_sq = dot3(vx, vy, vz, vx, vy, vz);
-        __m256d r2 = _mm256_set1_pd(l->radius * l->radius);
-        __mmask8 outside = _mm256_cmp_pd_mask(dist_sq, r2, _CMP_GT_OQ);
-        __m256d c = _mm256_mask_sqrt_pd(_mm256_set1_pd(-1.0), outside,
-                                        _mm256_div_pd(_mm256_sub_pd(dist_sq, r2), dist_sq));
-        __m256d h = _mm256_mask_div_pd(_mm256_set1_pd(2.0), outside, _mm256_div_pd(r2, dist_sq),
-                                       _mm256_add_pd(one, c));
-        _mm256_storeu_pd(at->cos_max[i], c);
-        _mm256_storeu_pd(at->one_minus_cos[i], h);
-        __m256d s = _mm256_div_pd(one, _mm256_sqrt_pd(dist_sq));
-        __mmask8 pos = _mm256_cmp_pd_mask(dist_sq, zero, _CMP_GT_OQ);
-        _mm256_storeu_pd(at->ax[i], _mm256_maskz_mul_pd(pos, s, vx));
-        _mm256_storeu_pd(at->ay[i], _mm256_maskz_mul_pd(pos, s, vy));
-        _mm256_storeu_pd(at->az[i], _mm256_mask_mul_pd(one, pos, s, vz));
-        __mmask8 open = _mm256_cmp_pd_mask(h, zero, _CMP_GT_OQ);
-        _mm256_storeu_pd(at->cone[i],
-                         _mm256_maskz_div_pd(open, one, _mm256_mul_pd(_mm256_set1_pd(MC_2PI), h)));
-    }
-}
-
-__attribute__((target("avx2,avx512f,avx512vl"))) static void value_avx512(const rt_lights4 *at,
-                                                                        const vec3 d[4], double out[4])
-{
-    __m256d dx, dy, dz;
-    lanes_of(d, &dx, &dy, &dz);
-    __m256d ox = _mm256_loadu_pd(at->ox), oy = _mm256_loadu_pd(at->oy), oz = _mm256_loadu_pd(at->oz);
-    const __m256d zero = _mm256_setzero_pd(), lo = _mm256_set1_pd(-PDF_QUAD_EDGE_TOL),
-                  hi = _mm256_set1_pd(1.0 + PDF_QUAD_EDGE_TOL);
-    const __m256d sign = _mm256_set1_pd(-0.0);
-    __m256d sum = zero;
-    for (int i = 0; i < at->n; i++) {
-        const rt_light *l = &at->lights[i];
-        if (l->kind != RT_PRIM_QUAD) {
-            __m256d rim, dd = cone_dot(at, i, dx, dy, dz, &rim);
-            /* not (dd < rim), NaN included: the lanes the cone covers */
-            __mmask8 on = _mm256_cmp_pd_mask(dd, rim, _CMP_NLT_UQ);
-            sum = _mm256_mask_add_pd(sum, on, sum, _mm256_loadu_pd(at->cone[i]));
-            continue;
-        }
-        __m256d denom, r = quad_r(at, i, dx, dy, dz, &denom);
-        __m256d s, t;
-        quad_st(l, ox, oy, oz, dx, dy, dz, r, &s, &t);
-        __mmask8 ok = _mm256_cmp_pd_mask(denom, zero, _CMP_NEQ_OQ);
-        ok = _mm256_mask_cmp_pd_mask(ok, r, zero, _CMP_GT_OQ);
-        ok = _mm256_mask_cmp_pd_mask(ok, s, lo, _CMP_GE_OQ);
-        ok = _mm256_mask_cmp_pd_mask(ok, s, hi, _CMP_LE_OQ);
-        ok = _mm256_mask_cmp_pd_mask(ok, t, lo, _CMP_GE_OQ);
-        ok = _mm256_mask_cmp_pd_mask(ok, t, hi, _CMP_LE_OQ);
-        __m256d c = _mm256_andnot_pd(sign, denom);
-        ok = _mm256_mask_cmp_pd_mask(ok, c, zero, _CMP_GT_OQ);
-        __m256d v = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(l->inv_area), _mm256_mul_pd(r, r)), c);
-        sum = _mm256_mask_add_pd(sum, ok, sum, v);
-    }
-    _mm256_storeu_pd(out, list_average(sum, at->n));
-}
 #endif
 
-bool rt_lights4_isa_available(rt_lights4_isa isa)
-{
-    switch (isa) {
-    case RT_LIGHTS4_PORTABLE:
-        return true;
-#ifdef RT_LIGHTS4_X86
-    case RT_LIGHTS4_AVX2:
-        return __builtin_cpu_supports("avx2");
-    case RT_LIGHTS4_AVX512:
-        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("avx512f") &&
-               __builtin_cpu_supports("avx512vl");
-#endif
-    default:
-        return false;
-    }
-}
-
-rt_lights4_isa rt_lights4_isa_best(void)
-{
-    if (rt_lights4_isa_available(RT_LIGHTS4_AVX512))
-        return RT_LIGHTS4_AVX512;
-    return rt_lights4_isa_available(RT_LIGHTS4_AVX2) ? RT_LIGHTS4_AVX2 : RT_LIGHTS4_PORTABLE;
-}
-
-void rt_lights4_prepare_isa(rt_lights4_isa isa, rt_lights4 *at, const rt_light *lights, int n,
-                            const vec3 origin[RT_LIGHTS4_LANES])
+void rt_lights4_prepare(rt_isa isa, rt_lights4 *at, const rt_light *lights, int n,
+                        const vec3 origin[RT_LANES])
 {
     at->lights = lights;
     at->n = n;
-#ifdef RT_LIGHTS4_X86
-    if (isa == RT_LIGHTS4_AVX512) {
-        prepare_avx512(at, origin);
-        return;
-    }
-    if (isa == RT_LIGHTS4_AVX2) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (isa == RT_ISA_AVX2) {
         prepare_avx2(at, origin);
         return;
     }
 #else
     (void)isa;
 #endif
-    for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
+    for (int k = 0; k < RT_LANES; k++) {
         rt_lights_at one;
         rt_lights_prepare(&one, lights, n, origin[k]);
         store_lane(at, k, &one);
     }
 }
 
-/* BEGIN SNIPPET lights4_value_isa */
-void rt_lights4_value_isa(rt_lights4_isa isa, const rt_lights4 *at, const vec3 d[RT_LIGHTS4_LANES],
-                          double out[RT_LIGHTS4_LANES])
+/* BEGIN SNIPPET lights4_value */
+void rt_lights4_value(rt_isa isa, const rt_lights4 *at, const vec3 d[RT_LANES],
+                      double out[RT_LANES])
 {
-#ifdef RT_LIGHTS4_X86
-    if (isa == RT_LIGHTS4_AVX512) {
-        value_avx512(at, d, out);
-        return;
-    }
-    if (isa == RT_LIGHTS4_AVX2) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (isa == RT_ISA_AVX2) {
         value_avx2(at, d, out);
         return;
     }
 #else
     (void)isa;
 #endif
-    for (int k = 0; k < RT_LIGHTS4_LANES; k++) {
+    for (int k = 0; k < RT_LANES; k++) {
         rt_lights_at one;
         rt_lights4_lane(at, k, &one);
         out[k] = rt_lights_at_value(&one, d[k]);
     }
 }
-/* END SNIPPET lights4_value_isa */
-
-void rt_lights4_prepare(rt_lights4 *at, const rt_light *lights, int n,
-                        const vec3 origin[RT_LIGHTS4_LANES])
-{
-    rt_lights4_prepare_isa(rt_lights4_isa_best(), at, lights, n, origin);
-}
-
-void rt_lights4_value(const rt_lights4 *at, const vec3 d[RT_LIGHTS4_LANES],
-                      double out[RT_LIGHTS4_LANES])
-{
-    rt_lights4_value_isa(rt_lights4_isa_best(), at, d, out);
-}
+/* END SNIPPET lights4_value */

@@ -1,0 +1,40 @@
+/* render/fast/isa.c - the one decision of the instruction set. */
+#include "render/fast/isa.h"
+
+#include <threads.h>
+
+bool rt_isa_available(rt_isa isa)
+{
+    switch (isa) {
+    case RT_ISA_PORTABLE:
+        return true;
+    case RT_ISA_AVX2:
+#if defined(__x86_64__) && defined(__GNUC__)
+        return __builtin_cpu_supports("avx2");
+#else
+        return false;
+#endif
+    }
+    return false;
+}
+
+/* Written once, by call_once, before any read: every later call, from
+ * any thread, sees the same choice. */
+static rt_isa chosen;
+static once_flag choose_once = ONCE_FLAG_INIT;
+
+static void choose(void)
+{
+    chosen = rt_isa_available(RT_ISA_AVX2) ? RT_ISA_AVX2 : RT_ISA_PORTABLE;
+}
+
+rt_isa rt_isa_best(void)
+{
+    call_once(&choose_once, choose);
+    return chosen;
+}
+
+const char *rt_isa_name(rt_isa isa)
+{
+    return isa == RT_ISA_AVX2 ? "avx2" : "portable";
+}
