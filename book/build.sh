@@ -78,26 +78,28 @@ done
 wait
 [ ! -e "$STATE/failed" ] || exit 1
 
-# The pages of whole files, with line numbers (anchors L-1, L-2, ...), two
-# at a time.
+# The pages of whole files, with line numbers (anchors L-1, L-2, ...): plain
+# text in a page of the book's style, written by awk (pandoc's highlighting
+# of fifty files would cost more than every other page together).
 source_page() { # $1 = path of a source file
-    local f=$1 page=$OUT/src/$1.html depth root ext lang
+    local f=$1 page=$OUT/src/$1.html depth root
     mkdir -p "$(dirname "$page")"
     depth=$(tr -cd / <<<"src/$f" | wc -c)
     root=$(printf '../%.0s' $(seq 1 "$depth"))
-    ext=${f##*.}
-    case $ext in c | h) lang=c ;; sh) lang=bash ;; gp) lang=gnuplot ;; *) lang=$ext ;; esac
-    {
-        printf '# `%s`\n\n' "$f"
-        printf '~~~~~~~~~~~~~~~~ {#L .%s .numberLines}\n' "$lang"
-        cat "$f"
-        printf '~~~~~~~~~~~~~~~~\n'
-    } | pandoc --fail-if-warnings -f markdown -t html5 -s --template book/template.html \
-        -M "pagetitle=$f" -V "root=$root" -o "$page"
+    awk -v path="$f" -v root="$root" '
+        function esc(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); gsub(/>/, "\\&gt;", s); return s }
+        BEGIN {
+            print "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">"
+            print "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+            print "<title>" esc(path) " - mcbox</title>"
+            print "<link rel=\"stylesheet\" href=\"" root "style.css\">\n</head>\n<body>"
+            print "<nav class=\"book-nav\"><a href=\"" root "index.html\">Contents</a></nav>\n<main>"
+            print "<h1><code>" esc(path) "</code></h1>\n<pre class=\"source-file\"><code>"
+        }
+        { printf "<span id=\"L-%d\"><a class=\"ln\" href=\"#L-%d\">%d</a>%s</span>\n", NR, NR, NR, esc($0) }
+        END { print "</code></pre>\n</main>\n</body>\n</html>" }' "$f" >"$page"
 }
-export -f source_page
-export OUT
-sort -u "$STATE/used-files" | xargs -r -P "$jobs_max" -I{} bash -c 'source_page "$1"' _ {}
+sort -u "$STATE/used-files" | while read -r f; do source_page "$f"; done
 
 # The contents page: book/index.md, then one line per chapter.
 {

@@ -245,23 +245,28 @@ local function run(el)
   local cached = state .. "/runs/" .. key
   local outtext = read_file(cached .. ".out")
   if not outtext then
-    local script = "t0=$(date +%s%N); cd " .. shell_quote(rundir) .. " && PATH=" ..
+    -- Two chapters built at once may run the same command: the lock makes
+    -- the second wait for the first and take its output (the command runs
+    -- only when no output is there once the lock is held).
+    local q = function(ext) return shell_quote(cached .. ext) end
+    local script = "exec 9>" .. q(".lock") .. " && flock 9 && [ -e " .. q(".out") .. " ] || { " ..
+      "t0=$(date +%s%N); cd " .. shell_quote(rundir) .. " && PATH=" ..
       shell_quote(build .. "/bin:" .. build .. "/tests") .. ":\"$PATH\" " ..
       "MC_BUILD=" .. shell_quote(build) .. " bash -o pipefail -c " .. shell_quote(cmd) ..
-      " >" .. shell_quote(cached .. ".tmp") ..
-      (with_err and " 2>&1" or " 2>" .. shell_quote(cached .. ".err")) ..
-      "; echo $? >" .. shell_quote(cached .. ".rc") ..
-      "; echo $((($(date +%s%N) - t0) / 1000000)) >" .. shell_quote(cached .. ".ms")
+      " >" .. q(".tmp") .. (with_err and " 2>&1" or " 2>" .. q(".err")) ..
+      "; echo $? >" .. q(".rc") ..
+      "; echo $((($(date +%s%N) - t0) / 1000000)) >" .. q(".ms") ..
+      "; mv " .. q(".tmp") .. " " .. q(".out") .. "; }"
     os.execute("mkdir -p " .. shell_quote(rundir) .. " " .. shell_quote(state .. "/runs"))
-    os.execute(script)
+    os.execute("bash -c " .. shell_quote(script))
     local rc = tonumber((read_file(cached .. ".rc") or "1"):match("%d+"))
+    outtext = read_file(cached .. ".out") or ""
     if rc ~= want then
-      local err = read_file(cached .. ".err") or read_file(cached .. ".tmp") or ""
+      os.remove(cached .. ".out")
+      local err = read_file(cached .. ".err") or outtext
       die(where, "command `" .. cmd .. "` exited with status " .. rc .. " (expected " .. want ..
         ")" .. (err ~= "" and (": " .. err:gsub("\n+$", "")) or ""))
     end
-    outtext = read_file(cached .. ".tmp") or ""
-    os.rename(cached .. ".tmp", cached .. ".out")
     append_line(state .. "/run-times", (read_file(cached .. ".ms") or "?\n"):gsub("\n", "") ..
       " ms " .. cmd:gsub("\n", " "))
   end
