@@ -495,6 +495,18 @@ static void test_cli_long_runs_announce(void **state)
         if (strncmp(err, name, strlen(name)) != 0 || !strstr(err, " for "))
             fail_msg("'%s': no announcement of its time: '%s'", cases[i].cmd, err);
     }
+    /* On a terminal (script(1) gives the program one) the announcement is
+     * followed by a progress line, redrawn once a second. */
+    snprintf(full, sizeof full,
+             "cd %s/bin && script -qec 'timeout -s KILL 2.5 ./mixture --samples 1e12' /dev/null "
+             ">../cli_tty.out 2>&1",
+             b);
+    (void)system(full);
+    snprintf(full, sizeof full, "%s/cli_tty.out", b);
+    mc_test_read_text(full, err, sizeof err);
+    if (!strstr(err, "mixture: about ") || !strstr(err, "\rmixture: 1 s of about "))
+        fail_msg("mixture on a terminal: no progress line: '%s'", err);
+    remove(full);
     snprintf(full, sizeof full, "%s/cli_long.png", b);
     remove(full);
     run *r = malloc(sizeof *r);

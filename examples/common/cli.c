@@ -1,6 +1,8 @@
 /* examples/common/cli.c - option parsing, errors, the result table. */
 #include "examples/common/cli.h"
 
+#include "examples/common/ticker.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -114,6 +116,7 @@ void app_announce(const char *prog, double seconds, const char *what)
         k++;
     fprintf(stderr, "%s: about %.2g %s for %s\n", prog, seconds / units[k].s, units[k].unit, what);
     fflush(stderr);
+    app_ticker_start(prog, seconds);
 }
 
 void app_announce_samples(const char *prog, uint64_t n, double seconds_per_sample)

@@ -92,7 +92,8 @@ bool app_parse_double(const char *s, double *out);
 
 /* Says on stderr, before a run estimated to take `seconds` (more than
  * APP_ANNOUNCE_SECONDS), how long it will take and what it is:
- * "prog: about 2.3 h for what". `threads` is the --threads value (0: all)
+ * "prog: about 2.3 h for what"; on a terminal a progress line follows
+ * (ticker.h). `threads` is the --threads value (0: all)
  * that the estimate assumed. Silent for shorter runs. */
 void app_announce(const char *prog, double seconds, const char *what);
 
