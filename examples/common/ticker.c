@@ -1,4 +1,6 @@
 /* examples/common/ticker.c - the progress line of ticker.h. */
+/* clock_gettime, fileno, isatty and the pthread calls are POSIX, not C17. */
+#define _POSIX_C_SOURCE 200809L
 #include "examples/common/ticker.h"
 
 #include <pthread.h>
