@@ -33,7 +33,8 @@ for s in $(seq 1 "$k"); do
     else
         bad=$((bad + 1))
         echo "seed $s: $(tail -1 "$log")  <- FAILED:"
-        grep -E '^\[  FAILED  \] [a-z]|seed' "$log" | head -5
+        # The failed tests and their messages (passing z-tests print their seed too).
+        grep -E '^\[  FAILED  \] [a-z]|^ERROR|rejects|is false' "$log" | head -5
     fi
 done
 awk -v b="$bad" -v k="$k" 'BEGIN { printf "soak: %d of %d seeds had a failure (%.3f)\n", b, k, b / k }'
