@@ -48,9 +48,10 @@ int main(int argc, char **argv)
         return 1;
     }
     double book_paths_per_s = 600.0 * 600.0 * 100.0 / BOOK_SECONDS;
-    printf("book scene %dx%d, %llu spp, max depth 50, mixture; the book's program: %.0f s, %.2f Mpaths/s\n",
+    printf("book scene %dx%d, %llu spp, max depth 50, mixture; the book's program: %.0f s, %.2f Mpaths/s\n"
+           "(x_book: paths per second as a multiple of the book's program, not a thread speed-up)\n",
            width, width, (unsigned long long)spp, BOOK_SECONDS, book_paths_per_s * 1e-6);
-    printf("%7s %10s %12s %15s %10s %9s\n", "threads", "wall_s", "Mpaths/s", "Msegments/s", "speedup", "dropped");
+    printf("%7s %10s %12s %15s %10s %9s\n", "threads", "wall_s", "Mpaths/s", "Msegments/s", "x_book", "dropped");
     for (int t = 1; t <= max_threads; t++) {
         rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, width, width));
         job.spp = spp;

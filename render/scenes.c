@@ -1,6 +1,7 @@
 /* render/scenes.c - Cornell box variants and the analytic test scenes. */
 #include "render/scenes.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "mc/constants.h"
@@ -65,6 +66,12 @@ static rt_scene *cornell(bool metal, bool lambert, rt_camera_params *cam)
     return s;
 }
 /* END SNIPPET cornell_book_scene */
+
+double rt_scene_furnace_radiance(double emission, double rho, int max_depth)
+{
+    /* Segment k (k = 1 .. max_depth) ends on the sphere and adds rho^(k-1) E. */
+    return emission * (1.0 - pow(rho, (double)max_depth)) / (1.0 - rho);
+}
 
 /* BEGIN SNIPPET furnace_scene */
 rt_scene *rt_scene_furnace(double emission, double rho, rt_camera_params *cam)
@@ -133,7 +140,7 @@ rt_scene *rt_scene_named(const char *name, rt_camera_params *cam)
     if (strcmp(name, "lambert") == 0)
         return cornell(false, true, cam);
     if (strcmp(name, "furnace") == 0)
-        return rt_scene_furnace(0.5, 0.5, cam);
+        return rt_scene_furnace(RT_FURNACE_EMISSION, RT_FURNACE_RHO, cam);
     if (strcmp(name, "sphere-light") == 0)
         return rt_scene_sphere_light(4e5, 20.0, 100.0, 400.0, 0.8, cam);
     return NULL;

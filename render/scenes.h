@@ -39,6 +39,15 @@ int rt_scene_cornell_room(rt_scene *s, rt_camera_params *cam);
  * rho = 0.5. */
 rt_scene *rt_scene_furnace(double emission, double rho, rt_camera_params *cam);
 
+/* The named "furnace" scene's emission and albedo. */
+#define RT_FURNACE_EMISSION 0.5
+#define RT_FURNACE_RHO 0.5
+
+/* The radiance every pixel of the furnace sees when a path has at most
+ * max_depth segments (max_depth >= 1): the first max_depth terms of the
+ * series above, E (1 - rho^max_depth) / (1 - rho). */
+double rt_scene_furnace_radiance(double emission, double rho, int max_depth);
+
 /* A Lambertian square of albedo rho in the plane y = 0 (corners at +-half
  * in x and z), lit by one sphere of radius r centred at (0, h, 0), h > r,
  * emitting radiance Phi / (4 pi^2 r^2) so that its flux is Phi; the sphere

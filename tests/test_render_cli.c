@@ -9,6 +9,7 @@
 
 #include "tests/support/mc_test.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -305,6 +306,38 @@ static void test_cli_refusals_keep_old_file(void **state)
     rmdir(dir);
 }
 
+/* The furnace prints its exact value, E (1 - rho^D) / (1 - rho) = 1 - 2^-50
+ * for the named scene at depth 50, and a z that must be below 4 (seed 1,
+ * 8 x 8 pixels, 16 samples each; false-alarm rate 6.3e-5); the lambert
+ * scene's image mean has no closed form and leaves the field empty. */
+static void test_cli_furnace_prints_exact(void **state)
+{
+    (void)state;
+    char out[4096], err[4096], args[2048];
+    const char *b = mc_test_build_dir();
+    snprintf(args, sizeof args, "--scene furnace --width 8 --spp 16 --threads 1 --seed 1 --csv -o %s/cli_f.pfm",
+             b);
+    assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+    const char *row = strstr(out, "\nmean_linear_r,");
+    assert_non_null(row);
+    double n, estimate, std_error, exact, z;
+    assert_int_equal(sscanf(row + 1, "mean_linear_r,%lf,%lf,%lf,%lf,%lf", &n, &estimate, &std_error, &exact, &z),
+                     5);
+    assert_near(exact, 1.0 - 0x1p-50, 0.0);
+    assert_z_below("cornell_box furnace image mean", estimate, exact, std_error, 4.0, 1);
+    assert_near(z, (estimate - exact) / std_error, 1e-5 * (1.0 + fabs(z)));
+    snprintf(args, sizeof args, "--scene lambert --width 8 --spp 4 --threads 1 --csv -o %s/cli_f.pfm", b);
+    assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+    row = strstr(out, "\nmean_linear_r,");
+    assert_non_null(row);
+    const char *end = strchr(row + 1, '\n');
+    size_t len = end ? (size_t)(end - row - 1) : strlen(row + 1);
+    if (len < 2 || row[len] != ',' || row[len - 1] != ',')
+        fail_msg("lambert: the exact and z fields are not empty: '%.*s'", (int)len, row + 1);
+    snprintf(args, sizeof args, "%s/cli_f.pfm", b);
+    remove(args);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -314,6 +347,7 @@ int main(void)
         cmocka_unit_test(test_cli_sigterm_sighup_replace_file_whole),
         cmocka_unit_test(test_cli_write_error_keeps_old_file),
         cmocka_unit_test(test_cli_refusals_keep_old_file),
+        cmocka_unit_test(test_cli_furnace_prints_exact),
     };
     return cmocka_run_group_tests_name("test_render_cli", tests, NULL, NULL);
 }
