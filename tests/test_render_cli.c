@@ -33,11 +33,7 @@ static int run(const char *args, char *out, size_t out_len, char *err, size_t er
     static const char *const names[2] = {"cli.out", "cli.err"};
     for (int i = 0; i < 2; i++) {
         snprintf(path, sizeof path, "%s/%s", b, names[i]);
-        FILE *f = fopen(path, "rb");
-        assert_non_null(f);
-        size_t n = fread(bufs[i], 1, lens[i] - 1, f);
-        bufs[i][n] = '\0';
-        fclose(f);
+        mc_test_read_text(path, bufs[i], lens[i]);
     }
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
