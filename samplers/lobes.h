@@ -1,7 +1,8 @@
 /* samplers/lobes.h - glossy lobes about +z: the Phong lobe cos^n theta and
  * the GGX (Trowbridge-Reitz) microfacet distribution.
  *
- * From the lecture's table of hemisphere mappings (source 001); they extend
+ * From the table of hemisphere mappings in the lecture on solving the
+ * rendering equation; they extend
  * chapter 5 ("Generating Random Directions") beyond the Lambertian case.
  * Densities are per unit SOLID ANGLE on the hemisphere z >= 0; phi = 2 pi u1
  * and u2 drives the polar angle, as in samplers/hemisphere.h.

@@ -14,7 +14,7 @@
  *              infinite, like ln(sin x), at both ends (see below)
  *
  * The quadratic inverse is cbrt(8 u) = 2 cbrt(u). Slipping to 8 cbrt(u)
- * (the book's code does, issue 2 notes) spreads the samples over [0, 8]
+ * (the book's code does) spreads the samples over [0, 8]
  * yet keeps zero variance, because the formula 3x^2/8 still cancels the
  * integrand x^2 exactly: the estimate stays 8/3 and hides the bug. Only a
  * domain check on the samples finds it (tests/test_integrate.c does).

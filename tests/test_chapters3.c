@@ -1,5 +1,5 @@
 /* tests/test_chapters3.c - the estimators behind the chapter programs of
- * issue 3 (sphere_importance, cos_cubed, light_pdf, sphere_light,
+ * chapters 2-10 (sphere_importance, cos_cubed, light_pdf, sphere_light,
  * projected_area, mixture; pdf/experiments.h): z-tests against exact
  * values derived here independently (closed forms, moments, GSL
  * quadrature), each with a wrong estimator the same z-test rejects; then

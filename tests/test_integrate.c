@@ -180,9 +180,9 @@ static double csv_value(const char *cmd, const char *method, int col)
 }
 
 /* The exact values: quadrature against the closed form
- * (1 - 1/e)(pi - a / (2(a^2 + 4))), a = 1/2pi, and both against the digits
- * quoted in issue 2 (1.97336880, 2.0384319) and the exact column printed by
- * build/bin/estimate_halfway (when built). */
+ * (1 - 1/e)(pi - a / (2(a^2 + 4))), a = 1/2pi, and both against the
+ * digits of an independent evaluation (1.97336880, 2.0384319) and the
+ * exact column printed by build/bin/estimate_halfway (when built). */
 static void test_halfway_exact_values(void **state)
 {
     (void)state;

@@ -1,5 +1,5 @@
 /* tests/test_warp.c - the `warp` program ($MC_BUILD/bin/warp) does what
- * issue 3 specifies: `list` names every sampler under its stable name with
+ * its usage promises: `list` names every sampler under its stable name with
  * domain, measure and parameters; `sample` prints points in the stated
  * format; `pdf` reads them back and prints densities that match known
  * values; `chi2` prints "chi2 dof p verdict" and passes correct samplers.

@@ -197,7 +197,8 @@ static void check_one(const warp_case *c, vec3 x, warp_domain *d)
         d->not_finite++;
         bad = true;
     } else {
-        /* 1e-12: the brief's bound, ~4500 ulps; the warps are far inside. */
+        /* 1e-12, about 4500 ulps: a unit length lost to a missing
+         * renormalization is far larger, round-off far smaller. */
         if (c->direction && !(fabs(vec3_length(x) - 1.0) <= 1e-12)) {
             d->not_unit++;
             bad = true;

@@ -138,7 +138,8 @@ void warp_catalog_tests(const char *const *families, int n_families, struct CMUn
  * first + i), failing the running test listing every failed check. */
 void warp_run_cases(const warp_case *cases, int m, int first, uint64_t n, uint64_t seed);
 
-/* Tolerances of the brief: normalization and round trip. */
+/* Tolerances of the normalization and round-trip checks (README, "How the
+ * tests decide"). */
 #define WARP_NORM_TOL 1e-6
 #define WARP_RT_TOL 1e-9
 
