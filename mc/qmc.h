@@ -1,0 +1,131 @@
+/* mc/qmc.h - quasi-Monte Carlo point sources: radical inverse, Hammersley,
+ * Halton, Sobol, and their random scrambles.
+ *
+ * Serves the chapter "Quasi-Monte Carlo", which follows the stratified
+ * samples of chapter 1: instead of independent uniforms, points of [0,1)^D
+ * that fill the cube more evenly than chance does, so that the error of a
+ * smooth integrand can fall like N^-1 (or N^-3/2 once scrambled) instead of
+ * N^-1/2.
+ *
+ * Every point is a pure function of its index (and of the seed of its
+ * scramble): there is no hidden state, so any thread can draw any sample and
+ * results do not depend on the order in which samples are drawn.
+ *
+ * Scrambled points are random (a random digital shift, random digit
+ * permutations, or Owen's nested uniform scramble); each of those is
+ * uniformly distributed over the cube, so an estimate averaged over
+ * independent scrambles is unbiased and has an honest standard error. The
+ * scrambles are seeded by (seed, stream) as the RNG is: the same pair gives
+ * the same points, different streams give independent scrambles.
+ */
+#ifndef MC_QMC_H
+#define MC_QMC_H
+
+#include <stdint.h>
+
+#include "mc/rng.h"
+
+/* Largest dimension (exclusive) of the Halton sequence: dimension d uses
+ * the (d+1)-th prime as its base (2, 3, 5, ...). */
+#define MC_HALTON_MAX_DIM 64
+/* Largest dimension (exclusive) of the Sobol table (Joe and Kuo's
+ * new-joe-kuo-6.21201 direction numbers, mc/sobol_table.h). */
+#define MC_SOBOL_MAX_DIM 1024
+
+/* The (k+1)-th prime: mc_qmc_prime(0) = 2. 0 <= k < MC_HALTON_MAX_DIM. */
+unsigned mc_qmc_prime(unsigned k);
+
+/* Radical inverse of i in base `base` (>= 2): the base-b digits of i
+ * mirrored about the radix point, a number in [0, 1). Exact while
+ * base^digits fits a double's 53-bit mantissa; rounded toward zero beyond. */
+double mc_radical_inverse(uint64_t i, unsigned base);
+
+/* Van der Corput's sequence (the radical inverse in base 2) as a 32-bit
+ * fraction: the bits of i reversed; the point is the result times 2^-32. */
+uint32_t mc_van_der_corput_u32(uint32_t i);
+
+/* Point i of the n-point Hammersley set in 2D, (i/n, radical inverse of i
+ * in base 2), and in 3D (i/n, base 2, base 3). 0 <= i < n. */
+void mc_hammersley2(uint64_t i, uint64_t n, double x[2]);
+void mc_hammersley3(uint64_t i, uint64_t n, double x[3]);
+
+/* Dimension `dim` of point i of the Halton sequence: the radical inverse of
+ * i in base mc_qmc_prime(dim). 0 <= dim < MC_HALTON_MAX_DIM. */
+double mc_halton(uint64_t i, unsigned dim);
+
+/* The same with random digit permutations: each digit position of each
+ * dimension gets its own uniformly random permutation of {0, ..., b-1},
+ * drawn from (seed, stream, dim, position), applied to the digits of i
+ * before mirroring. Uniform over [0,1) for every i. */
+double mc_halton_permuted(uint64_t i, unsigned dim, uint64_t seed, uint64_t stream);
+
+/* Dimension `dim` of point i of the unscrambled Sobol sequence as a 32-bit
+ * fraction (the point is the result times 2^-32). Dimension 0 is van der
+ * Corput's sequence. 0 <= dim < MC_SOBOL_MAX_DIM, 0 <= i < 2^32. */
+uint32_t mc_sobol_u32(uint32_t i, unsigned dim);
+
+/* The 32-bit scramble key of dimension `dim` for the scramble (seed,
+ * stream): a hash of the three, so that keys of different dimensions and
+ * streams are independent. */
+uint32_t mc_qmc_key(uint64_t seed, uint64_t stream, unsigned dim);
+
+/* Owen's nested uniform scramble of a 32-bit fraction v under `key`: each
+ * bit is flipped or not according to a hash of key and the bits above it,
+ * so that every elementary interval is permuted at random. Uniform over the
+ * 2^32 fractions when key is uniform. */
+uint32_t mc_owen_scramble_u32(uint32_t v, uint32_t key);
+
+/* Sobol point i, dimension dim, as a double in [0, 1): unscrambled, with a
+ * random digital shift (XOR by the key of (seed, stream, dim)), or Owen
+ * scrambled with that key. */
+double mc_sobol(uint32_t i, unsigned dim);
+double mc_sobol_xor(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
+double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
+
+/* Element i of a random permutation of {0, ..., n-1} chosen by `key`
+ * (Kensler's cycle-walking hash): a way to visit the samples of a pixel in
+ * an order that differs from one dimension to the next. 0 <= i < n. */
+uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key);
+
+/* Padded Owen-scrambled Sobol, for a path tracer whose dimensions come in
+ * pairs: pair `pair` of sample k (of n) of the pixel `pixel` is the 2D Sobol
+ * point (dimensions 0 and 1) of index mc_permutation_element(k, n, ...),
+ * Owen scrambled, with permutation and scramble keys hashed from (seed,
+ * pixel, pair). Every pair is a stratified (0,2)-sequence on its own; pairs
+ * are decorrelated by their independent permutations. 0 <= k < n. */
+void mc_sobol_padded2(uint64_t seed, uint64_t pixel, uint32_t pair, uint32_t k, uint32_t n,
+                      double u[2]);
+
+/* Where the dimensions of a sample come from. */
+typedef enum mc_qmc_method {
+    MC_QMC_RANDOM,     /* PCG32: mc_rng_derive(seed ^ stream hash, i) */
+    MC_QMC_HALTON,     /* Halton with random digit permutations */
+    MC_QMC_SOBOL,      /* Sobol, unscrambled (deterministic: no error bar) */
+    MC_QMC_SOBOL_XOR,  /* Sobol with a random digital shift */
+    MC_QMC_SOBOL_OWEN, /* Sobol, Owen scrambled */
+} mc_qmc_method;
+
+/* Largest number of dimensions the method can give (exclusive); for
+ * MC_QMC_RANDOM, UINT32_MAX. */
+unsigned mc_qmc_max_dim(mc_qmc_method method);
+
+/* A cursor over the dimensions of sample i: the caller asks for the next
+ * dimension without knowing whether it comes from PCG32 or a sequence.
+ * Dimensions are handed out in order 0, 1, 2, ...; asking for dimension
+ * mc_qmc_max_dim(method) or beyond is the caller's error (checked by an
+ * assertion in debug builds). */
+typedef struct mc_qmc_cursor {
+    mc_qmc_method method;
+    uint64_t seed, stream, index;
+    unsigned dim;
+    mc_rng rng; /* used by MC_QMC_RANDOM only */
+} mc_qmc_cursor;
+
+/* A cursor at dimension 0 of sample i of the point source (method, seed,
+ * stream). */
+mc_qmc_cursor mc_qmc_begin(mc_qmc_method method, uint64_t seed, uint64_t stream, uint64_t i);
+
+/* The next dimension of the cursor's sample, in [0, 1). */
+double mc_qmc_next(mc_qmc_cursor *c);
+
+#endif /* MC_QMC_H */
