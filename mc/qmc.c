@@ -117,17 +117,23 @@ uint32_t mc_van_der_corput_u32(uint32_t i)
     return i;
 }
 
-void mc_hammersley2(uint64_t i, uint64_t n, double x[2])
+/* i / n, which for n beyond 2^53 can round up to 1: kept in [0, 1). */
+static double fraction(uint64_t i, uint64_t n)
 {
     assert(i < n);
-    x[0] = (double)i / (double)n;
+    double x = (double)i / (double)n;
+    return x < 1.0 ? x : ONE_MINUS_ULP;
+}
+
+void mc_hammersley2(uint64_t i, uint64_t n, double x[2])
+{
+    x[0] = fraction(i, n);
     x[1] = mc_radical_inverse(i, 2u);
 }
 
 void mc_hammersley3(uint64_t i, uint64_t n, double x[3])
 {
-    assert(i < n);
-    x[0] = (double)i / (double)n;
+    x[0] = fraction(i, n);
     x[1] = mc_radical_inverse(i, 2u);
     x[2] = mc_radical_inverse(i, 3u);
 }
