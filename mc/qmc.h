@@ -150,4 +150,13 @@ mc_qmc_cursor mc_qmc_begin(mc_qmc_method method, uint64_t seed, uint64_t stream,
 /* The next dimension of the cursor's sample, in [0, 1). */
 double mc_qmc_next(mc_qmc_cursor *c);
 
+/* Dimension `dim` of the consecutive samples i0, ..., i0 + n - 1 of the
+ * point source (method, seed, stream) into out[0 .. n): exactly the values
+ * cursors of those samples give as their dimension dim, computed faster
+ * for a run (the Sobol methods step from one index to the next with one
+ * XOR and hash the key once). dim < mc_qmc_max_dim(method); for the Sobol
+ * methods i0 + n <= 2^32. */
+void mc_qmc_fill(mc_qmc_method method, uint64_t seed, uint64_t stream, uint64_t i0, uint32_t n,
+                 unsigned dim, double *out);
+
 #endif /* MC_QMC_H */
