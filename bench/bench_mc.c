@@ -179,7 +179,8 @@ static void qmc_table(void)
     qmc_row("Sobol XOR (mc_sobol_xor)", app_bench_ns(q_method, (void *)&xor, n, seed, 5), pcg);
     qmc_row("Sobol Owen (mc_sobol_owen)", app_bench_ns(q_method, (void *)&owen, n, seed, 5), pcg);
     qmc_row("Sobol Owen (cursor)", app_bench_ns(q_cursor, (void *)&c_owen, n, seed, 5), pcg);
-    qmc_row("Sobol by index (mc_qmc_fill)", app_bench_ns(q_fill, (void *)&c_sobol, n, seed, 5), pcg);
+    qmc_row("Sobol by index (mc_qmc_fill)", app_bench_ns(q_fill, (void *)&c_sobol, n, seed, 5),
+            pcg);
     qmc_row("Sobol XOR (mc_qmc_fill)", app_bench_ns(q_fill, (void *)&c_xor, n, seed, 5), pcg);
     qmc_row("Sobol Owen (mc_qmc_fill)", app_bench_ns(q_fill, (void *)&c_owen, n, seed, 5), pcg);
     qmc_row("PCG32 (cursor, stream per point)", app_bench_ns(q_cursor, (void *)&c_rand, n, seed, 5),
@@ -200,8 +201,8 @@ static void row(const char *what, int threads, double rate, double scalar)
 int main(int argc, char **argv)
 {
     app_parse("bench_mc",
-              "bench_mc\n  throughput of the RNG, the pi kernels (1 and 2 threads) and the QMC point\n"
-              "  sources (see make bench)",
+              "bench_mc\n  throughput of the RNG, the pi kernels (1 and 2 threads) and the QMC\n"
+              "  point sources (see make bench)",
               argc, argv, NULL, 0, NULL, 0);
     uint64_t n = UINT64_C(1) << 30;
     double uni = rate_uniform(UINT64_C(1) << 28);

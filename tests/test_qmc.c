@@ -166,8 +166,8 @@ static void test_qmc_sobol_net_property(void **state)
     printf("net property: %d point sets (m = 2..12; unscrambled, 4 XOR, 4 Owen) are (0,m,2)-nets\n",
            nets);
     fill(PCG, seed, 0u, 1u << 8, x, y);
-    assert_seeded(negctl_record(t, "PCG32 points as a net", "(0,m,2)-net check", !is_02_net(x, y, 8)),
-                  seed);
+    assert_seeded(
+        negctl_record(t, "PCG32 points as a net", "(0,m,2)-net check", !is_02_net(x, y, 8)), seed);
     fill(MULT_SCRAMBLE, seed, 0u, 1u << 8, x, y);
     assert_true(negctl_record(t, "non-nested scramble (XOR then multiply)", "(0,m,2)-net check",
                               !is_02_net(x, y, 8)));
@@ -372,7 +372,8 @@ static void test_qmc_scrambles_unbiased(void **state)
             for (uint64_t r = 0; r < R; r++)
                 mc_welford_add(&w, qmc_estimate(&integrands[k], methods[m], seed, r, N));
             char label[96];
-            snprintf(label, sizeof label, "%s, %s, R = %d, N = %d", names[m], integrands[k].name, R, N);
+            snprintf(label, sizeof label, "%s, %s, R = %d, N = %d", names[m], integrands[k].name,
+                     R, N);
             assert_z_below(label, w.mean, integrands[k].exact, mc_welford_std_error(&w), 4.0, seed);
         }
     }
