@@ -197,8 +197,10 @@ uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
  * Burley (2020, "Practical Hash-based Owen Scrambling", JCGT 9(4)) uses this
  * to scramble by hashing; the constants are Vegdahl's improved ones (2021,
  * "Building a better LK hash", psychopath.io). The lowest reversed bit (the
- * first digit) is flipped by key bit 0, so a uniform key moves every point
- * uniformly. */
+ * first digit) is flipped by key bit 0. For k <= 16 the low k reversed bits
+ * after `x += key` are uniform in the key's low bits, and the multiplier
+ * depends only on its high half, so a uniform key makes the top 16 bits of
+ * every point exactly uniform. */
 static uint32_t lk_hash(uint32_t x, uint32_t key)
 {
     x ^= x * 0x3d20adeau;

@@ -84,7 +84,8 @@ uint32_t mc_qmc_key(uint64_t seed, uint64_t stream, unsigned dim);
  * so that every elementary interval is permuted at random (Burley's
  * hash-based scramble: a Laine-Karras style hash of the reversed bits).
  * A bijection of the 32-bit fractions for every key; the top bit is
- * flipped by key bit 0, and the result is uniform when key is uniform. */
+ * flipped by key bit 0, and for a uniform key the top 16 bits of the
+ * result are exactly uniform (the lower ones to the quality of the hash). */
 uint32_t mc_owen_scramble_u32(uint32_t v, uint32_t key);
 
 /* Sobol point i, dimension dim, as a double in [0, 1): unscrambled, with a
