@@ -11,11 +11,12 @@
  * A second table ("Quasi-Monte Carlo" chapter) gives the point sources of
  * mc/qmc.h in millions of coordinates per second (points per second per
  * dimension) with the ratio to PCG32's uniform doubles: Sobol points by
- * index, with a random digital shift, Owen scrambled (each through its
- * function and through the cursor, which hashes the scramble's seed once
- * per point), permuted Halton, and the renderer's padded pairs. Each row is
- * the median thread CPU time of five runs over D = 4 dimensions of
- * consecutive indices.
+ * index, with a random digital shift, Owen scrambled (through their
+ * functions, which hash the scramble's seed at every call; through the
+ * cursor, which hashes it once per point; and through mc_qmc_fill, which
+ * fills runs of 1024 samples one dimension at a time), permuted Halton, and
+ * the renderer's padded pairs. Each row is the median thread CPU time of
+ * five runs over D = 4 dimensions of consecutive indices.
  *
  * Build and run: make bench   (or: make all && build/bench/bench_mc)
  */
