@@ -30,12 +30,13 @@
 /* At most this many weights for `discrete` and `alias`. */
 #define CAT_MAX_WEIGHTS 256
 /* At most this many parameters per row and named cases per row. */
-#define CAT_MAX_PARAMS 4
+#define CAT_MAX_PARAMS 5
 #define CAT_MAX_CASES 5
 
-/* How a point is written and read: a direction as x y z, a planar point as
- * x y, a real as x, a discrete outcome as its index. */
-typedef enum cat_point { CAT_DIRECTION, CAT_PLANAR, CAT_REAL, CAT_INDEX } cat_point;
+/* How a point is written and read: a direction as x y z, a point of a
+ * surface in space as x y z, a planar point as x y, a real as x, a
+ * discrete outcome as its index. */
+typedef enum cat_point { CAT_DIRECTION, CAT_POINT, CAT_PLANAR, CAT_REAL, CAT_INDEX } cat_point;
 
 /* Every parameter any row takes; a row accepts only its own. */
 typedef struct cat_values {
@@ -43,9 +44,10 @@ typedef struct cat_values {
     double alpha;      /* ggx roughness */
     double cos_max;    /* cone */
     double w;          /* mixture: weight of the cosine pdf */
-    vec3 corner, u, v; /* quad-light and mixture: the parallelogram */
-    vec3 center;       /* sphere-light */
-    double radius;     /* sphere-light */
+    vec3 normal;       /* cosine-pdf and mixture: the cosine lobe's axis (any length > 0) */
+    vec3 corner, u, v; /* parallelogram, quad-light, light-list, mixture: the parallelogram */
+    vec3 center;       /* sphere-surface, sphere-light, light-list: the sphere */
+    double radius;
     double weights[CAT_MAX_WEIGHTS];
     size_t n_weights; /* discrete and alias */
 } cat_values;
@@ -64,8 +66,11 @@ typedef struct cat_param {
 
 /* How goodness of fit histograms a row's points: x on [lo, hi]; an index
  * k as k + 1/2 on [0, count]; a planar point as (x, y) on [0, 1]^2; a disc
- * point as (r^2, phi), where d area = d(r^2) d phi / 2; a direction in a
- * chart of pdf/chart.h (the state's); or, for a lobe about +z, as
+ * point as (r^2, phi), where d area = d(r^2) d phi / 2; a point of the
+ * parallelogram corner + a u + b v as (a, b) on [0, 1]^2, where
+ * d area = |u x v| da db; a point of a sphere's surface as (cos theta, phi)
+ * about its centre, where d area = r^2 d(cos theta) d phi; a direction in
+ * a chart of pdf/chart.h (the state's); or, for a lobe about +z, as
  * x = theta / (theta + s) and phi over [0, x(pi/2)] x [0, 2 pi], which
  * spreads a lobe of width about s over many cells. */
 typedef enum cat_chart_kind {
@@ -73,6 +78,8 @@ typedef enum cat_chart_kind {
     CAT_CHART_INDEX,
     CAT_CHART_XY,
     CAT_CHART_DISC,
+    CAT_CHART_PARALLELOGRAM,
+    CAT_CHART_SURFACE,
     CAT_CHART_DIRECTION,
     CAT_CHART_LOBE
 } cat_chart_kind;
@@ -114,8 +121,9 @@ typedef struct cat_row {
     /* Whether x lies in the support, or NULL for the chart's rectangle
      * (a direction: cos theta >= its lower end). */
     bool (*in_support)(const cat_state *s, const double x[3]);
-    /* The density may be exactly 0 on the horizon z = 0 (cosine lobes). */
-    bool rim_zero;
+    /* The density may be exactly 0 on the horizon z = 0 (cosine lobes), and
+     * infinite on the polar axis (uniform in theta, 1 / sin theta). */
+    bool rim_zero, pole_infinite;
     cat_chart_kind chart;
     double lo, hi; /* LINE: the interval; DIRECTION: cos theta from lo about +z by default */
     cat_case cases[CAT_MAX_CASES + 1];
@@ -126,9 +134,9 @@ typedef struct cat_row {
 struct cat_state {
     const cat_row *row;
     cat_values p;
-    pdf cosine, quad, sphere, mixture;
+    pdf uniform, cosine, quad, sphere, mixture, list;
     const pdf *object; /* the pdf object a pdf row samples */
-    const pdf *parts[2];
+    const pdf *parts[2]; /* the mixture's components, or the list's items */
     double mix_weights[2];
     smp_discrete_cdf cdf;
     double cdf_storage[CAT_MAX_WEIGHTS];
@@ -148,7 +156,7 @@ const cat_row *cat_at(size_t i);
 const cat_row *cat_find(const char *name);
 const cat_case *cat_find_case(const char *name, const cat_row **row);
 
-/* The number of coordinates of a point: 3, 2, 1 or 1. */
+/* The number of coordinates of a point: 3, 3, 2, 1 or 1. */
 int cat_point_dims(const cat_row *r);
 
 /* "key=default ..." into buf, "-" for a row without parameters. */
@@ -171,7 +179,9 @@ bool cat_prepare(const cat_row *r, const cat_values *p, cat_state *s, char *err,
 bool cat_prepare_case(const cat_row *r, const cat_case *c, cat_state *s, char *err,
                       size_t errlen);
 
-/* One sample into x[0..dims) (x[dims..3) are set to 0). */
+/* One sample into x[0..dims) (x[dims..3) are set to 0, except that an
+ * index row leaves in x[1] the uniform in [0, 1) its table had left over,
+ * samplers/discrete.h). */
 void cat_sample(const cat_state *s, mc_rng *rng, double x[3]);
 
 /* The density at x[0..dims) with respect to the row's measure (for an
