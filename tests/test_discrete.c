@@ -104,8 +104,8 @@ static double pdf_table(const double x[2], void *ctx)
 
 static chi2_outcome run(row_table *t, const char *name, uint64_t seed)
 {
-    chi2_spec s = {name, 1, {0.0, 0.0}, {(double)t->n, 1.0}, {(int)(4 * t->n), 1},
-                   sample_table, pdf_table, t};
+    chi2_spec s = {name, {1, {0.0, 0.0}, {(double)t->n, 1.0}, {(int)(4 * t->n), 1}, sample_table,
+                          pdf_table, t}};
     chi2_outcome o = chi2_run(&s, 400000u, seed, chi2_suite_alpha());
     chi2_print(&s, &o);
     return o;

@@ -126,11 +126,7 @@ static mc_gof_spec gof_spec(const warp_case *c)
 
 chi2_spec warp_chi2_spec(const warp_case *c)
 {
-    mc_gof_spec g = gof_spec(c);
-    chi2_spec s = {c->name,           g.dims,
-                   {g.lo[0], g.lo[1]}, {g.hi[0], g.hi[1]},
-                   {g.cells[0], g.cells[1]}, g.sample,
-                   g.pdf,             g.ctx};
+    chi2_spec s = {c->name, gof_spec(c)};
     return s;
 }
 
