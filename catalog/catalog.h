@@ -24,6 +24,7 @@
 #include "mc/gof.h"
 #include "mc/rng.h"
 #include "pdf/chart.h"
+#include "pdf/experiments.h"
 #include "pdf/pdf.h"
 #include "samplers/discrete.h"
 
@@ -175,6 +176,10 @@ bool cat_set_param(const cat_row *r, cat_values *p, const char *assignment, char
  * a message in err otherwise. */
 bool cat_prepare(const cat_row *r, const cat_values *p, cat_state *s, char *err, size_t errlen);
 
+/* The row called `name` with its defaults, prepared into *s. False with a
+ * message in err for an unknown name. */
+bool cat_prepare_named(const char *name, cat_state *s, char *err, size_t errlen);
+
 /* cat_defaults, the case's assignments and cat_prepare in one call. */
 bool cat_prepare_case(const cat_row *r, const cat_case *c, cat_state *s, char *err,
                       size_t errlen);
@@ -187,6 +192,13 @@ void cat_sample(const cat_state *s, mc_rng *rng, double x[3]);
 /* The density at x[0..dims) with respect to the row's measure (for an
  * index, its probability). Directions must be unit length. */
 double cat_pdf(const cat_state *s, const double x[3]);
+
+/* The estimate of the integral of f over the directions of a direction
+ * row (per unit solid angle) from n >= 1 directions drawn from s: the mean
+ * of f(d) / cat_pdf(d), its variance per sample and its standard error.
+ * A direction of density 0 contributes 0 (unbiased only if f vanishes
+ * wherever the density does: the caller's contract). */
+mc_estimate cat_integrate(pdf_fn f, const cat_state *s, mc_rng *rng, uint64_t n);
 
 /* Uses the lobe chart of width `width` (> 0) for a direction row about +z. */
 void cat_use_lobe_chart(cat_state *s, double width);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "mc/constants.h"
+#include "mc/integrate.h"
 #include "samplers/spherical.h"
 
 const cat_row *cat_find(const char *name)
@@ -147,6 +148,18 @@ bool cat_prepare(const cat_row *r, const cat_values *v, cat_state *s, char *err,
     return r->prepare ? r->prepare(s, err, errlen) : true;
 }
 
+bool cat_prepare_named(const char *name, cat_state *s, char *err, size_t errlen)
+{
+    const cat_row *r = cat_find(name);
+    if (!r) {
+        snprintf(err, errlen, "no sampler '%s' in the catalog", name);
+        return false;
+    }
+    cat_values v;
+    cat_defaults(r, &v);
+    return cat_prepare(r, &v, s, err, errlen);
+}
+
 bool cat_prepare_case(const cat_row *r, const cat_case *c, cat_state *s, char *err,
                       size_t errlen)
 {
@@ -182,6 +195,39 @@ double cat_pdf(const cat_state *s, const double x[3])
 {
     return s->row->pdf(s, x);
 }
+
+/* --- the estimator over directions -------------------------------------- */
+
+/* cat_integrate as an mc_is_sampler over a direction row's points:
+ * mc_integrate_sampler holds the one weighting loop. */
+typedef struct row_integrand {
+    pdf_fn f;
+    const cat_state *s;
+} row_integrand;
+
+/* BEGIN SNIPPET catalog_estimator */
+static double row_draw(mc_rng *rng, void *ctx, void *x)
+{
+    const row_integrand *c = ctx;
+    double *d = x;
+    cat_sample(c->s, rng, d);
+    return cat_pdf(c->s, d);
+}
+
+static double row_f(const void *x, void *ctx)
+{
+    const row_integrand *c = ctx;
+    const double *d = x;
+    return c->f.f(vec3_make(d[0], d[1], d[2]), c->f.ctx);
+}
+
+mc_estimate cat_integrate(pdf_fn f, const cat_state *s, mc_rng *rng, uint64_t n)
+{
+    row_integrand c = {f, s};
+    double d[3];
+    return mc_integrate_sampler((mc_is_sampler){row_draw, row_f, NULL, &c}, d, rng, n);
+}
+/* END SNIPPET catalog_estimator */
 
 /* --- charts -------------------------------------------------------------- */
 
