@@ -7,9 +7,11 @@
  * to sample it (from uniforms, or from a generator), its density, its
  * inverse and support where it has them, the chart in which its goodness
  * of fit is histogrammed, and the named parameter sets the test suite and
- * the benchmark run. `warp`, `sphere_plot`, `bench_samplers` and the
- * sampler tests all iterate this one table, so adding a sampler is adding
- * a row. Serves chapters 2-3 and 5-10 (every sampler and density of the
+ * the benchmark run. `warp`, `sphere_plot`, `plotdata_chi2`,
+ * `bench_samplers`, the chapter programs that estimate integrals over
+ * directions (cat_integrate) and the tests of the samplers and of the pdf
+ * objects all iterate this one table, so adding a sampler is adding a row.
+ * Serves chapters 2-3 and 5-10 (every sampler and density of the
  * book); the layer sits above pdf/ and below the programs.
  *
  * Nothing here prints or allocates; errors come back as messages.

@@ -2,8 +2,8 @@
  * pass, in one place, so that each sampler test is a table of cases.
  *
  * A warp_case is one sampler with one parameter set: a row of the sampler
- * catalog (catalog/catalog.h) with its parameters, or, for the few shapes
- * and formulas the catalog has no row for, its own functions.
+ * catalog (catalog/catalog.h) with its parameters, or, for a formula under
+ * test that is no sampler of the library, its own functions.
  * The checks RETURN their measurements instead of asserting, so that the
  * same check can be required to pass on a correct case and to fail on a
  * negative control. Serves chapter 5 ("Generating Random Directions") and
@@ -34,8 +34,7 @@ struct warp_case {
     const char *name;
     /* A row of the catalog with its parameters (catalog/catalog.h): its
      * sampler, density, inverse, support and chart. NULL for a case that
-     * brings its own functions below (a shape the catalog has no row for,
-     * or a formula under test). */
+     * brings its own functions below (a formula under test). */
     const cat_state *cat;
     int cells[2]; /* chi-square resolution; {0, 0}: the chart's (50 x 100) */
     /* Own functions, when cat is NULL. */
@@ -85,7 +84,7 @@ typedef struct warp_domain {
     uint64_t not_finite; /* a coordinate is NaN or infinite */
     uint64_t not_unit;   /* | |w| - 1 | > 1e-12 (directions) */
     uint64_t outside;    /* outside the support */
-    uint64_t zero_pdf;   /* pdf(sample) <= 0, NaN or infinite (rim exception aside) */
+    uint64_t zero_pdf;   /* pdf(sample) <= 0, NaN, or infinite (rim and pole exceptions aside) */
     vec3 example;        /* the first failing sample */
 } warp_domain;
 
