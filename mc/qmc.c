@@ -67,6 +67,7 @@ uint32_t mc_qmc_key(uint64_t seed, uint64_t stream, unsigned dim)
     return index_key(mc_qmc_stream_seed(seed, stream), dim);
 }
 
+/* BEGIN SNIPPET radical_inverse */
 /* Mirrors the base-b digits of i about the radix point. Digit j (j = 0 is
  * the lowest digit of i, which becomes the first after the point) is
  * replaced by a random permutation of {0..b-1} keyed by mix32(key + j
@@ -104,7 +105,9 @@ double mc_radical_inverse(uint64_t i, unsigned base)
     assert(base >= 2);
     return mirror_digits(i, base, 0, 0u);
 }
+/* END SNIPPET radical_inverse */
 
+/* BEGIN SNIPPET van_der_corput */
 uint32_t mc_van_der_corput_u32(uint32_t i)
 {
     /* Reverse by swapping ever smaller halves: 16-bit halves, bytes,
@@ -116,6 +119,7 @@ uint32_t mc_van_der_corput_u32(uint32_t i)
     i = ((i & 0x55555555u) << 1) | ((i >> 1) & 0x55555555u);
     return i;
 }
+/* END SNIPPET van_der_corput */
 
 /* i / n, which for n beyond 2^53 can round up to 1: kept in [0, 1). */
 static double fraction(uint64_t i, uint64_t n)
@@ -138,6 +142,7 @@ void mc_hammersley3(uint64_t i, uint64_t n, double x[3])
     x[2] = mc_radical_inverse(i, 3u);
 }
 
+/* BEGIN SNIPPET halton */
 double mc_halton(uint64_t i, unsigned dim)
 {
     return mirror_digits(i, mc_qmc_prime(dim), 0, 0u);
@@ -147,7 +152,9 @@ double mc_halton_permuted(uint64_t i, unsigned dim, uint64_t seed, uint64_t stre
 {
     return mirror_digits(i, mc_qmc_prime(dim), 1, mc_qmc_key(seed, stream, dim));
 }
+/* END SNIPPET halton */
 
+/* BEGIN SNIPPET sobol_u32 */
 uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
 {
     /* Point i is the generator matrix times the bits of i over GF(2): the
@@ -159,7 +166,9 @@ uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
         x ^= v[k] & (0u - (i & 1u));
     return x;
 }
+/* END SNIPPET sobol_u32 */
 
+/* BEGIN SNIPPET owen_scramble */
 /* Owen's nested uniform scramble flips each bit by a random function of the
  * bits above it. Reversed, "above" becomes "below", and every step of
  * Laine and Karras's permutation (2011, "Stratified sampling for stochastic
@@ -200,6 +209,7 @@ double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
     return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), mc_qmc_key(seed, stream, dim)) *
            0x1p-32;
 }
+/* END SNIPPET owen_scramble */
 
 /* Kensler (2013, "Correlated Multi-Jittered Sampling", Pixar technical memo
  * 13-01), section 3: a hash that is a bijection on the w-bit integers
@@ -281,6 +291,7 @@ mc_qmc_cursor mc_qmc_begin(mc_qmc_method method, uint64_t seed, uint64_t stream,
     return c;
 }
 
+/* BEGIN SNIPPET qmc_next */
 double mc_qmc_next(mc_qmc_cursor *c)
 {
     unsigned d = c->dim++;
@@ -300,3 +311,4 @@ double mc_qmc_next(mc_qmc_cursor *c)
     }
     return 0.0;
 }
+/* END SNIPPET qmc_next */
