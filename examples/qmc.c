@@ -87,7 +87,7 @@ static mc_estimate estimate(const mc_testfn *f, int m, uint64_t seed, uint64_t n
     e.n = n * reps;
     e.variance = e.std_error * e.std_error * (double)e.n; /* per evaluation, as other programs print */
     if (reps < 2)
-        e.std_error = e.variance = NAN;
+        e.std_error = e.variance = (double)NAN;
     return e;
 }
 /* END SNIPPET qmc_point */
