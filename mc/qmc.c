@@ -68,6 +68,7 @@ uint32_t mc_qmc_key(uint64_t seed, uint64_t stream, unsigned dim)
     return index_key(mc_qmc_stream_seed(seed, stream), dim);
 }
 
+/* BEGIN SNIPPET radical_inverse */
 /* Mirrors the base-b digits of i about the radix point. Digit j (j = 0 is
  * the lowest digit of i, which becomes the first after the point) is
  * replaced by a random permutation of {0..b-1} keyed by mix32(key + j
@@ -113,7 +114,9 @@ double mc_radical_inverse(uint64_t i, unsigned base)
     assert(base >= 2);
     return mirror_digits(i, base, 0, 0u);
 }
+/* END SNIPPET radical_inverse */
 
+/* BEGIN SNIPPET van_der_corput */
 uint32_t mc_van_der_corput_u32(uint32_t i)
 {
     /* Reverse by swapping ever smaller halves: 16-bit halves and bytes
@@ -130,6 +133,7 @@ uint32_t mc_van_der_corput_u32(uint32_t i)
     i = ((i & 0x55555555u) << 1) | ((i >> 1) & 0x55555555u);
     return i;
 }
+/* END SNIPPET van_der_corput */
 
 /* i / n, which for n beyond 2^53 can round up to 1: kept in [0, 1). */
 static double fraction(uint64_t i, uint64_t n)
@@ -152,6 +156,7 @@ void mc_hammersley3(uint64_t i, uint64_t n, double x[3])
     x[2] = mc_radical_inverse(i, 3u);
 }
 
+/* BEGIN SNIPPET halton */
 double mc_halton(uint64_t i, unsigned dim)
 {
     return mirror_digits(i, mc_qmc_prime(dim), 0, 0u);
@@ -161,6 +166,7 @@ double mc_halton_permuted(uint64_t i, unsigned dim, uint64_t seed, uint64_t stre
 {
     return mirror_digits(i, mc_qmc_prime(dim), 1, mc_qmc_key(seed, stream, dim));
 }
+/* END SNIPPET halton */
 
 /* The index of the lowest set bit of i != 0. */
 static unsigned lowest_bit(uint32_t i)
@@ -175,6 +181,7 @@ static unsigned lowest_bit(uint32_t i)
 #endif
 }
 
+/* BEGIN SNIPPET sobol_u32 */
 uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
 {
     /* Point i is the generator matrix times the bits of i over GF(2): the
@@ -188,7 +195,9 @@ uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
         x ^= v[lowest_bit(i)];
     return x;
 }
+/* END SNIPPET sobol_u32 */
 
+/* BEGIN SNIPPET owen_scramble */
 /* Owen's nested uniform scramble flips each bit by a random function of the
  * bits above it. Reversed, "above" becomes "below", and every step of
  * Laine and Karras's permutation (2011, "Stratified sampling for stochastic
@@ -231,6 +240,7 @@ double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
     return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), mc_qmc_key(seed, stream, dim)) *
            0x1p-32;
 }
+/* END SNIPPET owen_scramble */
 
 /* Kensler (2013, "Correlated Multi-Jittered Sampling", Pixar technical memo
  * 13-01), section 3: a hash that is a bijection on the w-bit integers
@@ -314,6 +324,7 @@ mc_qmc_cursor mc_qmc_begin(mc_qmc_method method, uint64_t seed, uint64_t stream,
     return c;
 }
 
+/* BEGIN SNIPPET qmc_next */
 double mc_qmc_next(mc_qmc_cursor *c)
 {
     unsigned d = c->dim++;
@@ -333,6 +344,7 @@ double mc_qmc_next(mc_qmc_cursor *c)
     }
     return 0.0;
 }
+/* END SNIPPET qmc_next */
 
 /* Sobol dimension d of indices i0 .. i0+n-1, as 32-bit fractions. Going
  * from i to i+1 flips bits 0..t of i, t = the lowest set bit of i+1, so
