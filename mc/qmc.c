@@ -230,15 +230,26 @@ double mc_sobol(uint32_t i, unsigned dim)
     return (double)mc_sobol_u32(i, dim) * 0x1p-32;
 }
 
+/* The two scrambles of point i, dimension dim, under its key: the digital
+ * shift and the nested uniform scramble. */
+static double sobol_xor_keyed(uint32_t i, unsigned dim, uint32_t key)
+{
+    return (double)(mc_sobol_u32(i, dim) ^ key) * 0x1p-32;
+}
+
+static double sobol_owen_keyed(uint32_t i, unsigned dim, uint32_t key)
+{
+    return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), key) * 0x1p-32;
+}
+
 double mc_sobol_xor(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
 {
-    return (double)(mc_sobol_u32(i, dim) ^ mc_qmc_key(seed, stream, dim)) * 0x1p-32;
+    return sobol_xor_keyed(i, dim, mc_qmc_key(seed, stream, dim));
 }
 
 double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
 {
-    return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), mc_qmc_key(seed, stream, dim)) *
-           0x1p-32;
+    return sobol_owen_keyed(i, dim, mc_qmc_key(seed, stream, dim));
 }
 /* END SNIPPET owen_scramble */
 
@@ -338,9 +349,9 @@ double mc_qmc_next(mc_qmc_cursor *c)
     case MC_QMC_SOBOL:
         return mc_sobol(i, d);
     case MC_QMC_SOBOL_XOR:
-        return (double)(mc_sobol_u32(i, d) ^ index_key(c->base, d)) * 0x1p-32;
+        return sobol_xor_keyed(i, d, index_key(c->base, d));
     case MC_QMC_SOBOL_OWEN:
-        return (double)mc_owen_scramble_u32(mc_sobol_u32(i, d), index_key(c->base, d)) * 0x1p-32;
+        return sobol_owen_keyed(i, d, index_key(c->base, d));
     }
     return 0.0;
 }

@@ -12,6 +12,7 @@
 #include "mc/qmc.h"
 #include "mc/rng.h"
 #include "mc/stats.h"
+#include "mc/testfn.h"
 #include "tests/data/sobol_scipy.h"
 #include "tests/support/negctl.h"
 
@@ -281,62 +282,42 @@ static void test_qmc_halton_boxes(void **state)
 
 /* ---- unbiasedness -------------------------------------------------------- */
 
-/* Smooth test integrands over [0,1]^dim with closed-form integrals. */
+/* Smooth test integrands over [0,1]^dim with closed-form integrals: three
+ * of mc/testfn.h (the ones the chapter's program uses) and 1 / (1 + x + y),
+ * whose mixed derivative never vanishes. */
 typedef struct integrand {
     const char *name;
     unsigned dim;
-    double (*f)(const double *x);
+    double (*f)(const double *x); /* or NULL: fn */
+    const mc_testfn *fn;
     double exact;
 } integrand;
-
-static double f_exp_sum(const double *x)
-{
-    return exp(x[0] + x[1]);
-}
 
 static double f_inv_sum(const double *x)
 {
     return 1.0 / (1.0 + x[0] + x[1]);
 }
 
-/* Genz's product peak, a = 3.7, centre u_d = 0.3 + 0.1 d. */
-static double f_genz_peak(const double *x)
+static double integrand_eval(const integrand *g, const double *x)
 {
-    double p = 1.0;
-    for (int d = 0; d < 5; d++) {
-        double t = x[d] - (0.3 + 0.1 * d);
-        p *= 1.0 / (1.0 / (3.7 * 3.7) + t * t);
-    }
-    return p;
+    return g->f ? g->f(x) : mc_testfn_eval(g->fn, x);
 }
 
-/* Genz's Gaussian, a = 2.1, centre 0.45. */
-static double f_gauss(const double *x)
-{
-    double s = 0.0;
-    for (int d = 0; d < 4; d++)
-        s += (x[d] - 0.45) * (x[d] - 0.45);
-    return exp(-2.1 * 2.1 * s);
-}
-
-/* int_0^1 1 / (a^-2 + (x - u)^2) dx = a (atan(a (1 - u)) + atan(a u));
- * int_0^1 exp(-a^2 (x - u)^2) dx = sqrt(pi) / (2 a) (erf(a (1 - u)) + erf(a u));
- * int int 1 / (1 + x + y) = 3 ln 3 - 4 ln 2 (integrate ln(2 + y) - ln(1 + y)). */
+/* int int 1 / (1 + x + y) = 3 ln 3 - 4 ln 2 (integrate ln(2 + y) - ln(1 + y)). */
 static integrand integrands[4];
+static mc_testfn smooth2, peak5, gauss4;
 
-static void init_integrands(void)
+static bool init_integrands(void)
 {
-    double peak = 1.0, gauss = 1.0;
-    for (int d = 0; d < 5; d++) {
-        double u = 0.3 + 0.1 * d;
-        peak *= 3.7 * (atan(3.7 * (1.0 - u)) + atan(3.7 * u));
-    }
-    for (int d = 0; d < 4; d++)
-        gauss *= sqrt(MC_PI) / (2.0 * 2.1) * (erf(2.1 * 0.55) + erf(2.1 * 0.45));
-    integrands[0] = (integrand){"exp(x + y)", 2u, f_exp_sum, expm1(1.0) * expm1(1.0)};
-    integrands[1] = (integrand){"1 / (1 + x + y)", 2u, f_inv_sum, 3.0 * log(3.0) - 4.0 * log(2.0)};
-    integrands[2] = (integrand){"Genz product peak 5D", 5u, f_genz_peak, peak};
-    integrands[3] = (integrand){"Genz Gaussian 4D", 4u, f_gauss, gauss};
+    if (!mc_testfn_init(&smooth2, MC_TESTFN_SMOOTH, 2u) ||
+        !mc_testfn_init(&peak5, MC_TESTFN_PEAK, 5u) || !mc_testfn_init(&gauss4, MC_TESTFN_GAUSS, 4u))
+        return false;
+    integrands[0] = (integrand){"exp(x + y)", 2u, NULL, &smooth2, mc_testfn_exact(&smooth2)};
+    integrands[1] = (integrand){"1 / (1 + x + y)", 2u, f_inv_sum, NULL,
+                                3.0 * log(3.0) - 4.0 * log(2.0)};
+    integrands[2] = (integrand){"Genz product peak 5D", 5u, NULL, &peak5, mc_testfn_exact(&peak5)};
+    integrands[3] = (integrand){"Genz Gaussian 4D", 4u, NULL, &gauss4, mc_testfn_exact(&gauss4)};
+    return true;
 }
 
 /* The estimate of f from points 0..n-1 of scramble `stream` of a method. */
@@ -348,7 +329,7 @@ static double qmc_estimate(const integrand *g, mc_qmc_method method, uint64_t se
         mc_qmc_cursor c = mc_qmc_begin(method, seed, stream, i);
         for (unsigned d = 0; d < g->dim; d++)
             x[d] = mc_qmc_next(&c);
-        sum += g->f(x);
+        sum += integrand_eval(g, x);
     }
     return sum / n;
 }
@@ -398,7 +379,7 @@ static void test_qmc_broken_scrambles_caught(void **state)
                 uint32_t v = mc_owen_scramble_u32(mc_sobol_u32(i, d), mc_qmc_key(seed, r, d));
                 x[d] = (double)(v | (1u << 29)) * 0x1p-32;
             }
-            sum += g->f(x);
+            sum += integrand_eval(g, x);
         }
         mc_welford_add(&stuck, sum / N);
         mc_welford_add(&shared, qmc_estimate(g, MC_QMC_SOBOL_OWEN, seed, 0u, N));
@@ -692,7 +673,8 @@ static void test_qmc_domain(void **state)
 
 static int group_setup(void **state)
 {
-    init_integrands();
+    if (!init_integrands())
+        return -1;
     return negctl_group_setup(state);
 }
 
