@@ -36,8 +36,10 @@
 unsigned mc_qmc_prime(unsigned k);
 
 /* Radical inverse of i in base `base` (>= 2): the base-b digits of i
- * mirrored about the radix point, a number in [0, 1). Exact while
- * base^digits fits a double's 53-bit mantissa; rounded toward zero beyond. */
+ * mirrored about the radix point, a number in [0, 1). Computed as one
+ * correctly rounded division rev / base^m while base^m <= 2^53 (every i
+ * below 2^53 in base 2, below 3^33 in base 3), within two roundings for
+ * longer i; never 1. */
 double mc_radical_inverse(uint64_t i, unsigned base);
 
 /* Van der Corput's sequence (the radical inverse in base 2) as a 32-bit
@@ -54,9 +56,12 @@ void mc_hammersley3(uint64_t i, uint64_t n, double x[3]);
 double mc_halton(uint64_t i, unsigned dim);
 
 /* The same with random digit permutations: each digit position of each
- * dimension gets its own uniformly random permutation of {0, ..., b-1},
- * drawn from (seed, stream, dim, position), applied to the digits of i
- * before mirroring. Uniform over [0,1) for every i. */
+ * dimension gets its own uniformly random permutation of {0, ..., b-1}
+ * (mc_permutation_element keyed by a hash of mc_qmc_key(seed, stream, dim)
+ * and the position), applied to the digits of i before mirroring. The
+ * zeros above the top digit of i are permuted too, down to a resolution of
+ * b^-m <= 2^-32, so every point is uniform over the multiples of b^-m in
+ * [0, 1) (the same resolution as mc_rng_uniform). */
 double mc_halton_permuted(uint64_t i, unsigned dim, uint64_t seed, uint64_t stream);
 
 /* Dimension `dim` of point i of the unscrambled Sobol sequence as a 32-bit
@@ -64,15 +69,22 @@ double mc_halton_permuted(uint64_t i, unsigned dim, uint64_t seed, uint64_t stre
  * Corput's sequence. 0 <= dim < MC_SOBOL_MAX_DIM, 0 <= i < 2^32. */
 uint32_t mc_sobol_u32(uint32_t i, unsigned dim);
 
+/* The 64-bit seed of the scramble (seed, stream): a hash of the two (two
+ * rounds of MurmurHash3's finaliser), from which every key of that scramble
+ * and the PCG32 streams of MC_QMC_RANDOM derive. */
+uint64_t mc_qmc_stream_seed(uint64_t seed, uint64_t stream);
+
 /* The 32-bit scramble key of dimension `dim` for the scramble (seed,
- * stream): a hash of the three, so that keys of different dimensions and
- * streams are independent. */
+ * stream): a hash of mc_qmc_stream_seed(seed, stream) and dim, so that keys
+ * of different dimensions and streams are independent. */
 uint32_t mc_qmc_key(uint64_t seed, uint64_t stream, unsigned dim);
 
 /* Owen's nested uniform scramble of a 32-bit fraction v under `key`: each
  * bit is flipped or not according to a hash of key and the bits above it,
- * so that every elementary interval is permuted at random. Uniform over the
- * 2^32 fractions when key is uniform. */
+ * so that every elementary interval is permuted at random (Burley's
+ * hash-based scramble: a Laine-Karras style hash of the reversed bits).
+ * A bijection of the 32-bit fractions for every key; the top bit is
+ * flipped by key bit 0, and the result is uniform when key is uniform. */
 uint32_t mc_owen_scramble_u32(uint32_t v, uint32_t key);
 
 /* Sobol point i, dimension dim, as a double in [0, 1): unscrambled, with a
@@ -83,22 +95,28 @@ double mc_sobol_xor(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
 double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
 
 /* Element i of a random permutation of {0, ..., n-1} chosen by `key`
- * (Kensler's cycle-walking hash): a way to visit the samples of a pixel in
- * an order that differs from one dimension to the next. 0 <= i < n. */
+ * (Kensler's cycle-walking hash, "Correlated Multi-Jittered Sampling",
+ * 2013): a way to visit the samples of a pixel in an order that differs
+ * from one dimension to the next. 1 <= n, 0 <= i < n; i -> result is a
+ * bijection of {0, ..., n-1} for every key. */
 uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key);
 
 /* Padded Owen-scrambled Sobol, for a path tracer whose dimensions come in
  * pairs: pair `pair` of sample k (of n) of the pixel `pixel` is the 2D Sobol
  * point (dimensions 0 and 1) of index mc_permutation_element(k, n, ...),
  * Owen scrambled, with permutation and scramble keys hashed from (seed,
- * pixel, pair). Every pair is a stratified (0,2)-sequence on its own; pairs
- * are decorrelated by their independent permutations. 0 <= k < n. */
+ * pixel, pair). Every pair is a stratified (0,2)-sequence on its own (for
+ * n a power of 2 the n samples of a pixel form a (0,m,2)-net in every
+ * pair); pairs are decorrelated by their independent permutations. The
+ * keys never coincide with those of mc_qmc_key(seed, pixel, dim), so a
+ * cursor of stream `pixel` can supply further dimensions. 1 <= n,
+ * 0 <= k < n. */
 void mc_sobol_padded2(uint64_t seed, uint64_t pixel, uint32_t pair, uint32_t k, uint32_t n,
                       double u[2]);
 
 /* Where the dimensions of a sample come from. */
 typedef enum mc_qmc_method {
-    MC_QMC_RANDOM,     /* PCG32: mc_rng_derive(seed ^ stream hash, i) */
+    MC_QMC_RANDOM,     /* PCG32: mc_rng_derive(mc_qmc_stream_seed(seed, stream), i) */
     MC_QMC_HALTON,     /* Halton with random digit permutations */
     MC_QMC_SOBOL,      /* Sobol, unscrambled (deterministic: no error bar) */
     MC_QMC_SOBOL_XOR,  /* Sobol with a random digital shift */
@@ -111,14 +129,18 @@ unsigned mc_qmc_max_dim(mc_qmc_method method);
 
 /* A cursor over the dimensions of sample i: the caller asks for the next
  * dimension without knowing whether it comes from PCG32 or a sequence.
- * Dimensions are handed out in order 0, 1, 2, ...; asking for dimension
- * mc_qmc_max_dim(method) or beyond is the caller's error (checked by an
- * assertion in debug builds). */
+ * Dimensions are handed out in order 0, 1, 2, ...; dimension d of sample i
+ * is exactly mc_halton_permuted(i, d, seed, stream), mc_sobol(i, d),
+ * mc_sobol_xor(...) or mc_sobol_owen(...), and for MC_QMC_RANDOM the d-th
+ * mc_rng_uniform of its stream. Asking for dimension
+ * mc_qmc_max_dim(method) or beyond, or for a Sobol sample i >= 2^32, is the
+ * caller's error (checked by an assertion). */
 typedef struct mc_qmc_cursor {
     mc_qmc_method method;
     uint64_t seed, stream, index;
     unsigned dim;
-    mc_rng rng; /* used by MC_QMC_RANDOM only */
+    mc_rng rng;    /* used by MC_QMC_RANDOM only */
+    uint64_t base; /* mc_qmc_stream_seed(seed, stream), computed once */
 } mc_qmc_cursor;
 
 /* A cursor at dimension 0 of sample i of the point source (method, seed,

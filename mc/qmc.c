@@ -1,0 +1,302 @@
+/* mc/qmc.c - radical inverses, Hammersley, Halton, Sobol and their
+ * scrambles; the cursor that hides which source a sample comes from. */
+#include "mc/qmc.h"
+
+#include <assert.h>
+
+#include "mc/sobol_table.h"
+
+_Static_assert(MC_SOBOL_MAX_DIM <= MC_SOBOL_TABLE_DIMS, "Sobol table too small");
+
+static const uint16_t primes[MC_HALTON_MAX_DIM] = {
+    2,   3,   5,   7,   11,  13,  17,  19,  23,  29,  31,  37,  41,  43,  47,  53,
+    59,  61,  67,  71,  73,  79,  83,  89,  97,  101, 103, 107, 109, 113, 127, 131,
+    137, 139, 149, 151, 157, 163, 167, 173, 179, 181, 191, 193, 197, 199, 211, 223,
+    227, 229, 233, 239, 241, 251, 257, 263, 269, 271, 277, 281, 283, 293, 307, 311};
+
+/* The largest double below 1, 1 - 2^-53. */
+#define ONE_MINUS_ULP 0x1.fffffffffffffp-1
+
+unsigned mc_qmc_prime(unsigned k)
+{
+    assert(k < MC_HALTON_MAX_DIM);
+    return primes[k];
+}
+
+/* MurmurHash3's 64-bit finaliser (Austin Appleby, public domain): a
+ * bijection with full avalanche, used to turn (seed, stream, dim) into
+ * independent-looking keys. */
+static uint64_t mix64(uint64_t x)
+{
+    x ^= x >> 33;
+    x *= UINT64_C(0xff51afd7ed558ccd);
+    x ^= x >> 33;
+    x *= UINT64_C(0xc4ceb9fe1a85ec53);
+    return x ^ (x >> 33);
+}
+
+/* Chris Wellons' "lowbias32" (2018, "Prospecting for hash functions",
+ * nullprogram.com): a cheap 32-bit bijective mix, for the per-digit keys of
+ * the Halton permutations. */
+static uint32_t mix32(uint32_t x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    return x ^ (x >> 16);
+}
+
+uint64_t mc_qmc_stream_seed(uint64_t seed, uint64_t stream)
+{
+    /* Both inputs pass through a full-avalanche mix, so neighbouring seeds
+     * or streams give unrelated scrambles. The constants only keep (0, 0)
+     * away from the fixed point mix64(0) = 0. */
+    return mix64(mix64(seed ^ UINT64_C(0x9e3779b97f4a7c15)) ^ (stream + UINT64_C(0x6a09e667f3bcc909)));
+}
+
+/* The key of sub-index k (a dimension, or a padded pair's slot) under the
+ * stream seed `base`: the high half of a mix of the two. */
+static uint32_t index_key(uint64_t base, uint64_t k)
+{
+    return (uint32_t)(mix64(base + (k + 1u) * UINT64_C(0x9e3779b97f4a7c15)) >> 32);
+}
+
+uint32_t mc_qmc_key(uint64_t seed, uint64_t stream, unsigned dim)
+{
+    return index_key(mc_qmc_stream_seed(seed, stream), dim);
+}
+
+/* Mirrors the base-b digits of i about the radix point. Digit j (j = 0 is
+ * the lowest digit of i, which becomes the first after the point) is
+ * replaced by a random permutation of {0..b-1} keyed by mix32(key + j
+ * golden) when `permute` is set, and then at least enough digits are kept
+ * that b^m >= 2^32, because the permuted zeros above the top digit of i are
+ * no longer zero. rev / b^m is one correctly rounded division while b^m <=
+ * 2^53; a longer i spills into a second chunk (i < 2^64 needs at most two:
+ * after the first, i < 2^64 b / 2^53 < 2^53 / b).
+ */
+static double mirror_digits(uint64_t i, unsigned b, int permute, uint32_t key)
+{
+    const uint64_t limit = UINT64_C(1) << 53, resolution = UINT64_C(1) << 32;
+    uint64_t rev[2] = {0u, 0u}, bm[2] = {1u, 1u};
+    uint32_t j = 0;
+    for (int c = 0; c < 2; c++) {
+        while ((i > 0 || (permute && bm[0] < resolution)) && bm[c] <= limit / b) {
+            uint32_t d = (uint32_t)(i % b);
+            i /= b;
+            if (permute)
+                d = mc_permutation_element(d, b, mix32(key + j * 0x9e3779b9u));
+            rev[c] = rev[c] * b + d;
+            bm[c] *= b;
+            j++;
+        }
+    }
+    assert(i == 0);
+    double x = ((double)rev[0] + (double)rev[1] / (double)bm[1]) / (double)bm[0];
+    /* Two roundings can carry rev[0] + frac up to b^m: keep the point in
+     * [0, 1). */
+    return x < 1.0 ? x : ONE_MINUS_ULP;
+}
+
+double mc_radical_inverse(uint64_t i, unsigned base)
+{
+    assert(base >= 2);
+    return mirror_digits(i, base, 0, 0u);
+}
+
+uint32_t mc_van_der_corput_u32(uint32_t i)
+{
+    /* Reverse by swapping ever smaller halves: 16-bit halves, bytes,
+     * nibbles, pairs, bits. */
+    i = (i << 16) | (i >> 16);
+    i = ((i & 0x00ff00ffu) << 8) | ((i >> 8) & 0x00ff00ffu);
+    i = ((i & 0x0f0f0f0fu) << 4) | ((i >> 4) & 0x0f0f0f0fu);
+    i = ((i & 0x33333333u) << 2) | ((i >> 2) & 0x33333333u);
+    i = ((i & 0x55555555u) << 1) | ((i >> 1) & 0x55555555u);
+    return i;
+}
+
+/* i / n, which for n beyond 2^53 can round up to 1: kept in [0, 1). */
+static double fraction(uint64_t i, uint64_t n)
+{
+    assert(i < n);
+    double x = (double)i / (double)n;
+    return x < 1.0 ? x : ONE_MINUS_ULP;
+}
+
+void mc_hammersley2(uint64_t i, uint64_t n, double x[2])
+{
+    x[0] = fraction(i, n);
+    x[1] = mc_radical_inverse(i, 2u);
+}
+
+void mc_hammersley3(uint64_t i, uint64_t n, double x[3])
+{
+    x[0] = fraction(i, n);
+    x[1] = mc_radical_inverse(i, 2u);
+    x[2] = mc_radical_inverse(i, 3u);
+}
+
+double mc_halton(uint64_t i, unsigned dim)
+{
+    return mirror_digits(i, mc_qmc_prime(dim), 0, 0u);
+}
+
+double mc_halton_permuted(uint64_t i, unsigned dim, uint64_t seed, uint64_t stream)
+{
+    return mirror_digits(i, mc_qmc_prime(dim), 1, mc_qmc_key(seed, stream, dim));
+}
+
+uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
+{
+    /* Point i is the generator matrix times the bits of i over GF(2): the
+     * XOR of the direction numbers v_k of the bits k set in i. */
+    assert(dim < MC_SOBOL_MAX_DIM);
+    const uint32_t *v = mc_sobol_matrix[dim];
+    uint32_t x = 0u;
+    for (unsigned k = 0; i != 0u; i >>= 1, k++)
+        x ^= v[k] & (0u - (i & 1u));
+    return x;
+}
+
+/* Owen's nested uniform scramble flips each bit by a random function of the
+ * bits above it. Reversed, "above" becomes "below", and every step of
+ * Laine and Karras's permutation (2011, "Stratified sampling for stochastic
+ * transparency") changes bit k only by a function of bits 0..k: adding the
+ * key, multiplying by an odd number, XOR with a multiple by an even one.
+ * Burley (2020, "Practical Hash-based Owen Scrambling", JCGT 9(4)) uses this
+ * to scramble by hashing; the constants are Vegdahl's improved ones (2021,
+ * "Building a better LK hash", psychopath.io). The lowest reversed bit (the
+ * first digit) is flipped by key bit 0, so a uniform key moves every point
+ * uniformly. */
+static uint32_t lk_hash(uint32_t x, uint32_t key)
+{
+    x ^= x * 0x3d20adeau;
+    x += key;
+    x *= (key >> 16) | 1u;
+    x ^= x * 0x05526c56u;
+    x ^= x * 0x53a22864u;
+    return x;
+}
+
+uint32_t mc_owen_scramble_u32(uint32_t v, uint32_t key)
+{
+    return mc_van_der_corput_u32(lk_hash(mc_van_der_corput_u32(v), key));
+}
+
+double mc_sobol(uint32_t i, unsigned dim)
+{
+    return (double)mc_sobol_u32(i, dim) * 0x1p-32;
+}
+
+double mc_sobol_xor(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
+{
+    return (double)(mc_sobol_u32(i, dim) ^ mc_qmc_key(seed, stream, dim)) * 0x1p-32;
+}
+
+double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
+{
+    return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), mc_qmc_key(seed, stream, dim)) *
+           0x1p-32;
+}
+
+/* Kensler (2013, "Correlated Multi-Jittered Sampling", Pixar technical memo
+ * 13-01), section 3: a hash that is a bijection on the w-bit integers
+ * (w = the bits of n - 1): XOR with key bits, multiplication by odd
+ * constants and xorshifts of the masked value are each invertible modulo
+ * 2^w. Values >= n are walked along their cycle until they fall back into
+ * [0, n) ("cycle walking"), which keeps the bijection; the final rotation by
+ * the key makes the image of any i uniform over the keys. */
+uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key)
+{
+    assert(i < n);
+    uint32_t w = n - 1u;
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    do {
+        i ^= key;
+        i *= 0xe170893du;
+        i ^= key >> 16;
+        i ^= (i & w) >> 4;
+        i ^= key >> 8;
+        i *= 0x0929eb3fu;
+        i ^= key >> 23;
+        i ^= (i & w) >> 1;
+        i *= 1u | key >> 27;
+        i *= 0x6935fa69u;
+        i ^= (i & w) >> 11;
+        i *= 0x74dcb303u;
+        i ^= (i & w) >> 2;
+        i *= 0x9e501cc3u;
+        i ^= (i & w) >> 2;
+        i *= 0xc860a3dfu;
+        i &= w;
+        i ^= i >> 5;
+    } while (i >= n);
+    return (uint32_t)(((uint64_t)i + key) % n);
+}
+
+void mc_sobol_padded2(uint64_t seed, uint64_t pixel, uint32_t pair, uint32_t k, uint32_t n,
+                      double u[2])
+{
+    /* Three keys per pair: the index permutation and the two scrambles.
+     * Their sub-indices start at 2^32, above every dimension a cursor of
+     * the same (seed, pixel) can ask for, so the two never share a key. */
+    uint64_t base = mc_qmc_stream_seed(seed, pixel);
+    uint64_t slot = (UINT64_C(1) << 32) + 3u * (uint64_t)pair;
+    uint32_t index = mc_permutation_element(k, n, index_key(base, slot));
+    u[0] = (double)mc_owen_scramble_u32(mc_sobol_u32(index, 0u), index_key(base, slot + 1u)) *
+           0x1p-32;
+    u[1] = (double)mc_owen_scramble_u32(mc_sobol_u32(index, 1u), index_key(base, slot + 2u)) *
+           0x1p-32;
+}
+
+unsigned mc_qmc_max_dim(mc_qmc_method method)
+{
+    switch (method) {
+    case MC_QMC_RANDOM:
+        return UINT32_MAX;
+    case MC_QMC_HALTON:
+        return MC_HALTON_MAX_DIM;
+    case MC_QMC_SOBOL:
+    case MC_QMC_SOBOL_XOR:
+    case MC_QMC_SOBOL_OWEN:
+        return MC_SOBOL_MAX_DIM;
+    }
+    return 0u;
+}
+
+mc_qmc_cursor mc_qmc_begin(mc_qmc_method method, uint64_t seed, uint64_t stream, uint64_t i)
+{
+    mc_qmc_cursor c = {.method = method, .seed = seed, .stream = stream, .index = i, .dim = 0u};
+    c.base = mc_qmc_stream_seed(seed, stream);
+    if (method == MC_QMC_RANDOM)
+        c.rng = mc_rng_derive(c.base, i);
+    else if (method != MC_QMC_HALTON)
+        assert(i <= UINT32_MAX);
+    return c;
+}
+
+double mc_qmc_next(mc_qmc_cursor *c)
+{
+    unsigned d = c->dim++;
+    assert(d < mc_qmc_max_dim(c->method));
+    uint32_t i = (uint32_t)c->index;
+    switch (c->method) {
+    case MC_QMC_RANDOM:
+        return mc_rng_uniform(&c->rng);
+    case MC_QMC_HALTON:
+        return mirror_digits(c->index, primes[d], 1, index_key(c->base, d));
+    case MC_QMC_SOBOL:
+        return mc_sobol(i, d);
+    case MC_QMC_SOBOL_XOR:
+        return (double)(mc_sobol_u32(i, d) ^ index_key(c->base, d)) * 0x1p-32;
+    case MC_QMC_SOBOL_OWEN:
+        return (double)mc_owen_scramble_u32(mc_sobol_u32(i, d), index_key(c->base, d)) * 0x1p-32;
+    }
+    return 0.0;
+}
