@@ -14,11 +14,14 @@
  *                          request of sample k of pixel p is the first or
  *                          the first two dimensions of Sobol point
  *                          perm(k), with the index permutation perm and the
- *                          Owen scramble hashed from (seed, p, dimension)
- *                          (mc_sobol_padded2). Each request is a stratified
- *                          set over the pixel's samples; requests differ in
- *                          their permutations, which makes them independent
- *                          of one another, so the estimate stays unbiased.
+ *                          Owen scrambles keyed by a hash of (seed, p,
+ *                          dimension) (mc_sobol_padded2's construction,
+ *                          with the pixel's part of the hash computed once
+ *                          per pixel). Each request is a stratified set
+ *                          over the pixel's samples; requests differ in
+ *                          their permutations and scrambles, which makes
+ *                          them independent of one another, so the
+ *                          estimate stays unbiased.
  * The two PCG32 kinds draw one PCG32 output per uniform, in the order of
  * the requests, from a stream continued over the passes (render/render.c).
  *
@@ -72,14 +75,14 @@ typedef struct rt_sampler {
     bool reuse_dim;
     uint32_t dim; /* sobol: the next dimension of this sample */
     uint32_t k, n; /* sobol: this sample's index and the pixel's sample count */
-    uint64_t seed, pixel;
+    uint64_t base; /* sobol: mc_qmc_stream_seed(seed, pixel) */
 } rt_sampler;
 
 /* A sampler drawing every uniform from rng (independent and stratified,
  * and the tests' way to call the integrator with a stream). */
 static inline rt_sampler rt_sampler_from_rng(mc_rng rng)
 {
-    rt_sampler s = {rng, false, false, 0, 0, 1, 0, 0};
+    rt_sampler s = {rng, false, false, 0, 0, 1, 0};
     return s;
 }
 
