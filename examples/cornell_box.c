@@ -84,7 +84,7 @@ static options parse(int argc, char **argv)
         app_fail(prog, "--spp %llu is too many for a %dx%d image", (unsigned long long)o.spp, o.width,
                  o.width);
     if (strcmp(o.sampler, "sobol") == 0 && o.spp > UINT32_MAX)
-        app_fail(prog, "--spp %llu: the sobol sampler takes at most 2^32 samples per pixel",
+        app_fail(prog, "--spp %llu: the sobol sampler takes fewer than 2^32 samples per pixel",
                  (unsigned long long)o.spp);
     return o;
 }

@@ -87,7 +87,7 @@ static inline rt_sampler rt_sampler_from_rng(mc_rng rng)
 }
 
 /* The sampler of pixel `pixel` of a render of kind `kind` with `seed`
- * and spp samples per pixel (sobol: 1 <= spp <= 2^32), continuing the
+ * and spp samples per pixel (sobol: 1 <= spp < 2^32), continuing the
  * pixel's PCG32 stream rng. */
 rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, mc_rng rng,
                             uint64_t pixel);
