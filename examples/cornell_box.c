@@ -5,9 +5,13 @@
  * Build: make; run:
  *   build/bin/cornell_box --scene book --spp 100 -o cornell.png
  *   build/bin/cornell_box --scene lambert --strategy uniform -o uniform.pfm
+ *   build/bin/cornell_box --scene book --sampler sobol --reference ref.pfm -o sobol.pfm
  * Prints the image's mean linear RGB (standard errors from the per-pixel
  * variances), the paths, ray segments and dropped non-finite samples, and
- * the time. Ctrl-C (SIGINT), SIGTERM and SIGHUP write the image rendered so
+ * the time. --sampler picks where the uniforms come from
+ * (render/sampler.h); --reference REF.pfm compares the image with a
+ * converged one and prints the error per pixel and channel and the
+ * efficiency 1 / (MSE x seconds). Ctrl-C (SIGINT), SIGTERM and SIGHUP write the image rendered so
  * far and exit with 128 + the signal's number (130 for Ctrl-C). The image
  * goes to a temporary file beside the target, renamed over it only when
  * complete: whatever stops the program, the target holds either the
@@ -43,7 +47,7 @@ static void on_stop_signal(int sig)
 }
 
 typedef struct options {
-    const char *scene, *strategy, *gamma, *out;
+    const char *scene, *strategy, *sampler, *gamma, *out, *reference;
     int width, depth, threads;
     uint64_t spp, seed;
     bool csv, roulette;
@@ -51,7 +55,7 @@ typedef struct options {
 
 static options parse(int argc, char **argv)
 {
-    options o = {"book", "mixture", "2", "cornell.png", 600, 50, 0, 100, 1, false, false};
+    options o = {"book", "mixture", "stratified", "2", "cornell.png", NULL, 600, 50, 0, 100, 1, false, false};
     const app_opt opts[] = {
         {"--scene", APP_CHOICE, &o.scene, "the scene (default book)", rt_scene_names, 0, 0},
         {"--width", APP_INT, &o.width, "image width and height in pixels (default 600)", NULL, 1, 65536},
@@ -59,6 +63,11 @@ static options parse(int argc, char **argv)
         {"--samples", APP_COUNT, &o.spp, "same as --spp", NULL, 0, 0},
         {"--max-depth", APP_INT, &o.depth, "most ray segments per path (default 50)", NULL, 0, 1e6},
         {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (default mixture)", rt_strategy_names, 0, 0},
+        {"--sampler", APP_CHOICE, &o.sampler,
+         "where the uniforms come from: the pixel position jittered over cells and PCG32 for the rest, "
+         "PCG32 for all, or Owen-scrambled Sobol (default stratified)", rt_sampler_names, 0, 0},
+        {"--reference", APP_STRING, &o.reference,
+         "a converged .pfm of the same size: print the pixel RMSE, MSE and 1/(MSE x seconds)", NULL, 0, 0},
         {"--threads", APP_INT, &o.threads, "OpenMP threads, 0 for all, at most 64 per processor (default 0)",
          NULL, 0, app_max_threads()},
         {"--seed", APP_SEED, &o.seed, "random seed (default 1)", NULL, 0, 0},
@@ -68,11 +77,15 @@ static options parse(int argc, char **argv)
         {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments (default off)", NULL, 0, 0},
     };
     app_parse(prog, "cornell_box [--scene S] [--width W] [--spp N] [--max-depth D] "
-                    "[--strategy S] [--threads T] [--seed S] [-o FILE] [--gamma G] [--roulette]",
+                    "[--strategy S] [--sampler S] [--threads T] [--seed S] [-o FILE] [--gamma G] "
+                    "[--roulette] [--reference REF.pfm]",
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
     if (o.spp > UINT64_MAX / ((uint64_t)o.width * (uint64_t)o.width))
         app_fail(prog, "--spp %llu is too many for a %dx%d image", (unsigned long long)o.spp, o.width,
                  o.width);
+    if (strcmp(o.sampler, "sobol") == 0 && o.spp > UINT32_MAX)
+        app_fail(prog, "--spp %llu: the sobol sampler takes fewer than 2^32 samples per pixel",
+                 (unsigned long long)o.spp);
     return o;
 }
 
@@ -92,6 +105,43 @@ static void check_memory(const options *o)
     if (have > 0.0 && need > have)
         app_fail(prog, "--width %d needs about %.2f GB of memory, more than the %.2f GB available",
                  o->width, need * 1e-9, have * 1e-9);
+}
+
+/* The reference image of --reference, read before the render so that a
+ * bad one costs no rendering time: exit 2 if it cannot be read or is not
+ * a width x width PFM. */
+static rt_image *load_reference(const options *o)
+{
+    if (!o->reference)
+        return NULL;
+    FILE *f = fopen(o->reference, "rb");
+    if (!f)
+        app_fail(prog, "--reference %s: %s", o->reference, strerror(errno));
+    const char *why = "";
+    rt_image *ref = rt_image_read_pfm(f, &why);
+    fclose(f);
+    if (!ref)
+        app_fail(prog, "--reference %s: %s", o->reference, why);
+    if (ref->width != o->width || ref->height != o->width) {
+        int w = ref->width, h = ref->height;
+        rt_image_destroy(ref);
+        app_fail(prog, "--reference %s is %dx%d, the image %dx%d", o->reference, w, h, o->width,
+                 o->width);
+    }
+    return ref;
+}
+
+/* The error against the reference, per pixel and channel of linear RGB,
+ * and the efficiency 1 / (MSE x seconds) of the render: the larger, the
+ * less time to a given error (halving the MSE takes twice the samples).
+ * On stderr with --csv, so that stdout stays one table. */
+static void report_error(const options *o, const rt_image *img, const rt_image *ref, double seconds)
+{
+    double mse = rt_image_mse(img, ref);
+    fprintf(o->csv ? stderr : stdout,
+            "against %s: pixel RMSE %.6e, MSE %.6e (linear RGB, over all %dx%d pixels and 3 "
+            "channels); efficiency 1/(MSE x %.3f s) = %.6g\n",
+            o->reference, sqrt(mse), mse, img->width, img->height, seconds, 1.0 / (mse * seconds));
 }
 
 /* The progress line: percent, elapsed, estimated time left, throughput. */
@@ -162,6 +212,7 @@ int main(int argc, char **argv)
     if (format == RT_FORMAT_UNKNOWN)
         app_fail(prog, "-o %s: the extension must be .png, .ppm or .pfm", o.out);
     check_memory(&o);
+    rt_image *ref = load_reference(&o);
     app_outfile out;
     if (!app_outfile_open(&out, o.out))
         app_fail(prog, "cannot write '%s': %s", o.out, strerror(errno));
@@ -170,6 +221,7 @@ int main(int argc, char **argv)
     rt_image *img = rt_image_create(o.width, o.width);
     if (!scene || !img) {
         rt_image_destroy(img);
+        rt_image_destroy(ref);
         rt_scene_destroy(scene);
         app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
@@ -178,6 +230,7 @@ int main(int argc, char **argv)
     rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, o.width, o.width));
     rt_gamma gamma = RT_GAMMA_2;
     (void)rt_strategy_parse(o.strategy, &job.path.strategy);
+    (void)rt_sampler_parse(o.sampler, &job.sampler);
     (void)rt_gamma_parse(o.gamma, &gamma);
     job.path.max_depth = o.depth;
     job.path.russian_roulette = o.roulette;
@@ -205,6 +258,7 @@ int main(int argc, char **argv)
     rt_render_stats st;
     if (rt_render(&job, img, &st) < 0) {
         rt_image_destroy(img);
+        rt_image_destroy(ref);
         rt_scene_destroy(scene);
         app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
@@ -216,6 +270,7 @@ int main(int argc, char **argv)
     if (rt_image_write(img, out.f, format, gamma) != 0 || !app_outfile_commit(&out)) {
         int e = errno;
         rt_image_destroy(img);
+        rt_image_destroy(ref);
         rt_scene_destroy(scene);
         app_outfile_abort(&out);
         fprintf(stderr, "%s: error writing '%s'%s%s; it was left as it was\n", prog, o.out,
@@ -223,6 +278,8 @@ int main(int argc, char **argv)
         return 1;
     }
     report(&o, img, &st);
+    if (ref)
+        report_error(&o, img, ref, st.seconds);
     int sig = atomic_load(&interrupted);
     if (st.cancelled)
         fprintf(stderr, "%s: %s: %s holds %llu samples (%.2f per pixel of the %llu asked)\n",
@@ -230,6 +287,7 @@ int main(int argc, char **argv)
                 (unsigned long long)st.paths, (double)st.paths / ((double)o.width * o.width),
                 (unsigned long long)o.spp);
     rt_image_destroy(img);
+    rt_image_destroy(ref);
     rt_scene_destroy(scene);
     return st.cancelled ? 128 + sig : 0;
 }

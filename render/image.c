@@ -268,3 +268,100 @@ int rt_image_save(const rt_image *img, const char *path, rt_gamma g)
     int rc = rt_image_write(img, f, fmt, g);
     return fclose(f) == 0 ? rc : -1;
 }
+
+/* The next whitespace-separated token of a PNM-style header, at most
+ * len - 1 characters; false at the end of the file. */
+static bool header_token(FILE *f, char *tok, size_t len)
+{
+    int c;
+    while ((c = fgetc(f)) != EOF && isspace(c))
+        ;
+    size_t n = 0;
+    while (c != EOF && !isspace(c) && n + 1 < len) {
+        tok[n++] = (char)c;
+        c = fgetc(f);
+    }
+    tok[n] = '\0';
+    /* The single whitespace character after the scale ends the header:
+     * it has been consumed, and the data follow. */
+    return n > 0 && (c == EOF || isspace(c));
+}
+
+static uint32_t swap32(uint32_t v)
+{
+    return (v >> 24) | ((v >> 8) & 0xff00u) | ((v << 8) & 0xff0000u) | (v << 24);
+}
+
+rt_image *rt_image_read_pfm(FILE *f, const char **why)
+{
+    const char *dummy;
+    why = why ? why : &dummy;
+    char tok[4][32];
+    for (int i = 0; i < 4; i++)
+        if (!header_token(f, tok[i], sizeof tok[i])) {
+            *why = "not a PFM file";
+            return NULL;
+        }
+    if (strcmp(tok[0], "Pf") == 0) {
+        *why = "a greyscale PFM (colour PF expected)";
+        return NULL;
+    }
+    char *end1, *end2, *end3;
+    long w = strtol(tok[1], &end1, 10), h = strtol(tok[2], &end2, 10);
+    double scale = strtod(tok[3], &end3);
+    if (strcmp(tok[0], "PF") != 0 || *end1 || *end2 || *end3 || !(scale != 0.0) || !isfinite(scale)) {
+        *why = "not a PFM file";
+        return NULL;
+    }
+    if (w < 1 || h < 1 || w > 65536 || h > 65536) {
+        *why = "a size out of range";
+        return NULL;
+    }
+    const uint16_t probe = 1;
+    bool swap = (*(const unsigned char *)&probe == 1) != (scale < 0.0);
+    rt_image *img = rt_image_create((int)w, (int)h);
+    float *row = malloc(3 * sizeof(float) * (size_t)w);
+    if (!img || !row) {
+        free(row);
+        rt_image_destroy(img);
+        *why = "out of memory";
+        return NULL;
+    }
+    /* Rows are stored bottom to top. */
+    for (long y = h - 1; y >= 0; y--) {
+        if (fread(row, 3 * sizeof(float), (size_t)w, f) != (size_t)w) {
+            free(row);
+            rt_image_destroy(img);
+            *why = "truncated data";
+            return NULL;
+        }
+        for (long x = 0; x < w; x++) {
+            float c[3];
+            for (int k = 0; k < 3; k++) {
+                uint32_t bits;
+                memcpy(&bits, &row[3 * x + k], sizeof bits);
+                bits = swap ? swap32(bits) : bits;
+                memcpy(&c[k], &bits, sizeof bits);
+            }
+            if (!rt_pixel_add(&img->px[y * w + x], vec3_make((double)c[0], (double)c[1], (double)c[2]))) {
+                free(row);
+                rt_image_destroy(img);
+                *why = "non-finite values";
+                return NULL;
+            }
+        }
+    }
+    free(row);
+    return img;
+}
+
+double rt_image_mse(const rt_image *a, const rt_image *b)
+{
+    double sum = 0.0;
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++) {
+            vec3 d = vec3_sub(rt_image_get(a, x, y), rt_image_get(b, x, y));
+            sum += vec3_dot(d, d);
+        }
+    return sum / (3.0 * (double)a->width * (double)a->height);
+}

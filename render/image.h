@@ -91,4 +91,18 @@ int rt_image_write(const rt_image *img, FILE *f, rt_format format, rt_gamma g);
  * Returns 0, or -1 (unknown extension, cannot open or write). */
 int rt_image_save(const rt_image *img, const char *path, rt_gamma g);
 
+/* --- input and comparison -------------------------------------------------- */
+
+/* Reads a colour PFM ("PF", either byte order, as rt_image_write writes
+ * it; width and height 1..65536) into a new image whose every pixel holds
+ * one sample, the file's value. NULL on failure, with *why (may be NULL)
+ * set to a short static reason: not a PFM file, a greyscale PFM, a size
+ * out of range, truncated data, non-finite values, out of memory. */
+rt_image *rt_image_read_pfm(FILE *f, const char **why);
+
+/* The mean squared difference of the pixel values (rt_image_get) of two
+ * images of the same size, over all pixels and the three linear RGB
+ * channels. */
+double rt_image_mse(const rt_image *a, const rt_image *b);
+
 #endif /* RT_IMAGE_H */

@@ -41,13 +41,13 @@ static bool is_zero(vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
  * q = min(0.95, max channel of beta) and divide beta by q, so that the
  * expected contribution of everything after this point is unchanged
  * (q (X / q) + (1 - q) 0 = X). Returns false when the path stops. */
-static bool roulette(const rt_path_settings *ps, int depth, vec3 *beta, mc_rng *rng)
+static bool roulette(const rt_path_settings *ps, int depth, vec3 *beta, rt_sampler *sampler)
 {
     if (!ps->russian_roulette || depth + 1 < ps->rr_start)
         return true;
     double q = fmax(beta->x, fmax(beta->y, beta->z));
     q = q < 0.95 ? q : 0.95;
-    if (!(q > 0.0) || mc_rng_uniform(rng) >= q)
+    if (!(q > 0.0) || rt_sampler_1d(sampler) >= q)
         return false;
     *beta = vec3_scale(*beta, 1.0 / q);
     return true;
@@ -78,10 +78,15 @@ static void lights_prepare(lights_at *a, const rt_scene *s, const rt_path_settin
         rt_lights_prepare(&a->cache, rt_scene_lights(s), rt_scene_light_count(s), p);
 }
 
-/* A direction toward the lights (pdf_generate of the list). */
-static vec3 lights_generate(const lights_at *a, mc_rng *rng)
+/* A direction toward the lights (pdf_generate of the list). The pdf
+ * objects draw from a PCG32 stream, the pixel's, whatever the sampler:
+ * they are the reference for the PCG32 samplers, and under sobol their
+ * draws are independent of the sequence's, which leaves the estimate
+ * unbiased. */
+static vec3 lights_generate(const lights_at *a, rt_sampler *sampler)
 {
-    return a->objects ? pdf_generate(&a->list, rng) : rt_lights_at_generate(&a->cache, rng);
+    return a->objects ? pdf_generate(&a->list, &sampler->rng)
+                      : rt_lights_at_generate(&a->cache, sampler);
 }
 
 /* The list's density at the unit direction d, per unit solid angle. */
@@ -92,9 +97,9 @@ static double lights_value(const lights_at *a, vec3 d)
 
 /* The material's density at a diffuse hit: pdf_cosine about the normal
  * (rt_scatter_pdf), through the formulas pdf_cosine uses. */
-static vec3 material_generate(const rt_scatter *sr, mc_rng *rng)
+RT_HOT_INLINE vec3 material_generate(const rt_scatter *sr, rt_sampler *sampler)
 {
-    return rt_cosine_generate(sr->normal, rng);
+    return rt_cosine_generate(sr->normal, sampler);
 }
 
 static double material_value(const rt_scatter *sr, vec3 d) { return rt_cosine_value(sr->normal, d); }
@@ -119,12 +124,12 @@ static double mixture_density(const rt_path_settings *ps, const rt_scatter *sr, 
  * below its weight, else the material, then that component's generate. */
 /* BEGIN SNIPPET mixture_sample */
 static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, const rt_hit *h,
-                             const rt_scatter *sr, mc_rng *rng, vec3 *dir)
+                             const rt_scatter *sr, rt_sampler *sampler, vec3 *dir)
 {
     lights_at lights;
     lights_prepare(&lights, s, ps, h->p);
-    *dir = mc_rng_uniform(rng) < mixture_weights[0] ? lights_generate(&lights, rng)
-                                                    : material_generate(sr, rng);
+    *dir = rt_sampler_1d(sampler) < mixture_weights[0] ? lights_generate(&lights, sampler)
+                                                       : material_generate(sr, sampler);
     return mixture_density(ps, sr, *dir, lights_value(&lights, *dir));
 }
 /* END SNIPPET mixture_sample */
@@ -135,19 +140,20 @@ static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, cons
  * drawn with (per unit solid angle). */
 /* BEGIN SNIPPET diffuse_direction */
 static double diffuse_direction(const rt_scene *s, const rt_path_settings *ps, const rt_hit *h,
-                                const rt_scatter *sr, mc_rng *rng, vec3 *dir)
+                                const rt_scatter *sr, rt_sampler *sampler, vec3 *dir)
 {
     if (ps->strategy == RT_UNIFORM) {
-        double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+        double u1, u2;
+        rt_sampler_2d(sampler, &u1, &u2);
         onb frame = onb_from_w(h->normal);
         *dir = onb_to_world(&frame, smp_uniform_hemisphere_sample(u1, u2));
         return MC_INV_2PI;
     }
     if (ps->strategy != RT_MIXTURE || rt_scene_light_count(s) == 0) {
-        *dir = material_generate(sr, rng);
+        *dir = material_generate(sr, sampler);
         return material_value(sr, *dir);
     }
-    return mixture_sample(s, ps, h, sr, rng, dir);
+    return mixture_sample(s, ps, h, sr, sampler, dir);
 }
 /* END SNIPPET diffuse_direction */
 
@@ -163,10 +169,10 @@ rt_path_state rt_path_begin(const rt_path_settings *ps, rt_ray r)
 }
 
 /* The end of every step that goes on: roulette, then the depth limit. */
-static void path_next(const rt_path_settings *ps, rt_path_state *p, mc_rng *rng)
+static void path_next(const rt_path_settings *ps, rt_path_state *p, rt_sampler *sampler)
 {
     /* The flag is tested here too so that, off, the call is skipped. */
-    if (ps->russian_roulette && !roulette(ps, p->depth, &p->beta, rng))
+    if (ps->russian_roulette && !roulette(ps, p->depth, &p->beta, sampler))
         p->done = true;
     else if (++p->depth >= ps->max_depth)
         p->done = true;
@@ -174,7 +180,7 @@ static void path_next(const rt_path_settings *ps, rt_path_state *p, mc_rng *rng)
 
 /* BEGIN SNIPPET path_scatter */
 bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
-                     const rt_hit *h, mc_rng *rng, rt_path_vertex *v)
+                     const rt_hit *h, rt_sampler *sampler, rt_path_vertex *v)
 {
     if (!h) {
         p->L = vec3_add(p->L, vec3_mul(p->beta, rt_scene_background(s)));
@@ -183,7 +189,8 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
     }
     const rt_material *m = rt_scene_material(s, h->material);
     p->L = vec3_add(p->L, vec3_mul(p->beta, rt_material_emitted(m, h)));
-    if (!rt_material_scatter(m, &p->ray, h, rng, &v->sr)) {
+    rt_sampler_segment(sampler, p->depth);
+    if (!rt_material_scatter(m, &p->ray, h, sampler, &v->sr)) {
         p->done = true;
         return false;
     }
@@ -192,7 +199,7 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
         /* Field by field, not as one struct (docs/performance.md). */
         p->ray.origin = v->sr.ray.origin;
         p->ray.dir = v->sr.ray.dir;
-        path_next(ps, p, rng);
+        path_next(ps, p, sampler);
         return false;
     }
     v->p = h->p;
@@ -205,7 +212,7 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
 /* The rest of a diffuse step, along dir drawn with density pd. */
 /* BEGIN SNIPPET path_turn */
 static void path_turn(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
-                      vec3 dir, double pd, mc_rng *rng)
+                      vec3 dir, double pd, rt_sampler *sampler)
 {
     rt_hit h = {.p = v->p, .normal = v->normal};
     double sp = rt_material_scattering_pdf(v->m, &h, dir);
@@ -216,17 +223,17 @@ static void path_turn(const rt_path_settings *ps, rt_path_state *p, const rt_pat
     }
     p->beta = vec3_scale(vec3_mul(p->beta, v->sr.attenuation), sp / pd);
     p->ray = rt_ray_make(v->p, dir);
-    path_next(ps, p, rng);
+    path_next(ps, p, sampler);
 }
 /* END SNIPPET path_turn */
 
 void rt_path_continue(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
-                      const rt_path_vertex *v, mc_rng *rng)
+                      const rt_path_vertex *v, rt_sampler *sampler)
 {
     vec3 dir;
     rt_hit h = {.p = v->p, .normal = v->normal};
-    double pd = diffuse_direction(s, ps, &h, &v->sr, rng, &dir);
-    path_turn(ps, p, v, dir, pd, rng);
+    double pd = diffuse_direction(s, ps, &h, &v->sr, sampler, &dir);
+    path_turn(ps, p, v, dir, pd, sampler);
 }
 
 bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps)
@@ -235,22 +242,22 @@ bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps)
 }
 
 vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const rt_lights4 *at4,
-                  int k, mc_rng *rng)
+                  int k, rt_sampler *sampler)
 {
     /* mixture_draw with the lights prepared in lane k of at4. */
     (void)ps;
-    return mc_rng_uniform(rng) < mixture_weights[0] ? rt_lights4_generate(at4, k, rng)
-                                                    : material_generate(&v->sr, rng);
+    return rt_sampler_1d(sampler) < mixture_weights[0] ? rt_lights4_generate(at4, k, sampler)
+                                                       : material_generate(&v->sr, sampler);
 }
 
 void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
-                    vec3 dir, double light_value, mc_rng *rng)
+                    vec3 dir, double light_value, rt_sampler *sampler)
 {
-    path_turn(ps, p, v, dir, mixture_density(ps, &v->sr, dir, light_value), rng);
+    path_turn(ps, p, v, dir, mixture_density(ps, &v->sr, dir, light_value), sampler);
 }
 
-static vec3 book_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
-                          uint64_t *segments)
+static vec3 book_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r,
+                          rt_sampler *sampler, uint64_t *segments)
 {
     rt_path_state p = rt_path_begin(ps, r);
     while (!p.done) {
@@ -258,8 +265,8 @@ static vec3 book_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray 
         rt_path_vertex v;
         ++*segments;
         bool hit = rt_scene_hit(s, p.ray, HUGE_VAL, &h);
-        if (rt_path_scatter(s, ps, &p, hit ? &h : NULL, rng, &v))
-            rt_path_continue(s, ps, &p, &v, rng);
+        if (rt_path_scatter(s, ps, &p, hit ? &h : NULL, sampler, &v))
+            rt_path_continue(s, ps, &p, &v, sampler);
     }
     return p.L;
 }
@@ -317,14 +324,15 @@ static double continued_weight(const rt_scene *s, const rt_path_settings *ps, ve
  * already multiplied by the BRDF cosine and the MIS weight. */
 /* BEGIN SNIPPET direct_light */
 static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt_material *m,
-                         const rt_hit *h, const rt_scatter *sr, mc_rng *rng, uint64_t *segments)
+                         const rt_hit *h, const rt_scatter *sr, rt_sampler *sampler,
+                         uint64_t *segments)
 {
     vec3 zero = vec3_make(0.0, 0.0, 0.0);
     if (rt_scene_light_count(s) == 0)
         return zero;
     lights_at lights;
     lights_prepare(&lights, s, ps, h->p);
-    vec3 dir = lights_generate(&lights, rng);
+    vec3 dir = lights_generate(&lights, sampler);
     double pl = lights_value(&lights, dir) * ps->light_pdf_scale;
     double sp = rt_material_scattering_pdf(m, h, dir);
     if (!(sp > 0.0 && pl > 0.0))
@@ -341,8 +349,8 @@ static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt
 }
 /* END SNIPPET direct_light */
 
-static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
-                         uint64_t *segments)
+static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r,
+                         rt_sampler *sampler, uint64_t *segments)
 {
     vec3 L = vec3_make(0.0, 0.0, 0.0), beta = vec3_make(1.0, 1.0, 1.0);
     bool after_diffuse = false;
@@ -360,7 +368,8 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
             L = vec3_add(L, vec3_scale(vec3_mul(beta, le), w));
         }
         rt_scatter sr;
-        if (!hit || !rt_material_scatter(m, &r, &h, rng, &sr))
+        rt_sampler_segment(sampler, depth);
+        if (!hit || !rt_material_scatter(m, &r, &h, sampler, &sr))
             break;
         if (sr.specular) {
             beta = vec3_mul(beta, sr.attenuation);
@@ -370,8 +379,8 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
             /* A shadow ray from here makes a path one segment longer than
              * the one that reached here: only within max_depth. */
             if (depth + 1 < ps->max_depth)
-                L = vec3_add(L, vec3_mul(beta, direct_light(s, ps, m, &h, &sr, rng, segments)));
-            vec3 dir = material_generate(&sr, rng);
+                L = vec3_add(L, vec3_mul(beta, direct_light(s, ps, m, &h, &sr, sampler, segments)));
+            vec3 dir = material_generate(&sr, sampler);
             double pm = material_value(&sr, dir);
             double sp = rt_material_scattering_pdf(m, &h, dir);
             if (!(sp > 0.0))
@@ -382,17 +391,17 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
             after_diffuse = true;
             r = rt_ray_make(h.p, dir);
         }
-        if (ps->russian_roulette && !roulette(ps, depth, &beta, rng))
+        if (ps->russian_roulette && !roulette(ps, depth, &beta, sampler))
             break;
     }
     /* END SNIPPET nee_loop */
     return L;
 }
 
-vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
-                 uint64_t *segments)
+vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r,
+                 rt_sampler *sampler, uint64_t *segments)
 {
     if (ps->strategy == RT_LIGHT || ps->strategy == RT_MIS)
-        return nee_radiance(scene, ps, r, rng, segments);
-    return book_radiance(scene, ps, r, rng, segments);
+        return nee_radiance(scene, ps, r, sampler, segments);
+    return book_radiance(scene, ps, r, sampler, segments);
 }

@@ -31,7 +31,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "mc/rng.h"
+#include "render/sampler.h"
 #include "mc/vec3.h"
 #include "render/lights.h"
 #include "render/ray.h"
@@ -71,11 +71,12 @@ const char *rt_strategy_name(rt_strategy s);
 extern const char *const rt_strategy_names[];
 
 /* One sample of the radiance arriving along r (unit direction) at its
- * origin. May be non-finite if the scene makes it so (the caller drops
- * such samples). *segments is increased by the number of rays traced,
+ * origin, drawing its uniforms from the sample's sampler
+ * (render/sampler.h). May be non-finite if the scene makes it so (the
+ * caller drops such samples). *segments is increased by the number of rays traced,
  * shadow rays included. */
-vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r, mc_rng *rng,
-                 uint64_t *segments);
+vec3 rt_radiance(const rt_scene *scene, const rt_path_settings *ps, rt_ray r,
+                 rt_sampler *sampler, uint64_t *segments);
 
 /* The book's integrator one segment at a time, so that a caller can
  * trace the segments of several paths together (render/fast/rows.h): a path
@@ -110,12 +111,12 @@ typedef struct rt_path_vertex {
  * traced (h is its hit, or NULL if it left the scene) up to the choice of
  * the next direction: it returns true at a diffuse hit, having filled in
  * *v, and rt_path_continue(p, v) must then follow before the next
- * segment; false when the step is complete. Both draw from rng exactly as
+ * segment; false when the step is complete. Both draw from sampler exactly as
  * rt_radiance does at that point. */
 bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
-                     const rt_hit *h, mc_rng *rng, rt_path_vertex *v);
+                     const rt_hit *h, rt_sampler *sampler, rt_path_vertex *v);
 void rt_path_continue(const rt_scene *s, const rt_path_settings *ps, rt_path_state *p,
-                      const rt_path_vertex *v, mc_rng *rng);
+                      const rt_path_vertex *v, rt_sampler *sampler);
 
 /* True when rt_path_continue is the chapter-8 mixture with the fast
  * densities of render/lights.h: then it may also be done in three parts,
@@ -126,8 +127,8 @@ void rt_path_continue(const rt_scene *s, const rt_path_settings *ps, rt_path_sta
 struct rt_lights4;
 bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps);
 vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const struct rt_lights4 *at4,
-                  int k, mc_rng *rng);
+                  int k, rt_sampler *sampler);
 void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
-                    vec3 dir, double light_value, mc_rng *rng);
+                    vec3 dir, double light_value, rt_sampler *sampler);
 
 #endif /* RT_INTEGRATOR_H */

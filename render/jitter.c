@@ -50,6 +50,12 @@ rt_jitter rt_jitter_make(uint64_t spp)
 }
 /* END SNIPPET jitter_make */
 
+rt_jitter rt_jitter_none(void)
+{
+    rt_jitter j = {1, 1, 0, 1, 0, 0};
+    return j;
+}
+
 rt_cell rt_jitter_cell(const rt_jitter *jt, uint64_t k)
 {
     uint64_t c = k < jt->m ? mulmod(k, jt->stride, jt->m) : 0;

@@ -6,7 +6,9 @@
  * plain uniform points. The cells are visited in a scrambled order (a
  * stride coprime to the cell count), so that any prefix of a pixel's
  * samples is spread over the pixel. Shared by the reference row loop
- * (render/render.c) and the fast one (render/fast/rows.c).
+ * (render/render.c) and the fast one (render/fast/rows.c). The samplers
+ * other than the default stratified one (render/sampler.h) use no cells:
+ * their pixel position is the sampler's first 2D as it is.
  */
 #ifndef RT_JITTER_H
 #define RT_JITTER_H
@@ -14,8 +16,8 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "mc/rng.h"
 #include "render/camera.h"
+#include "render/sampler.h"
 
 /* The pixel's stratification: sx x sy cells, m = sx sy of them, visited
  * as cell (k stride) mod m for sample k < m; cell c is column c mod sx of
@@ -34,6 +36,9 @@ typedef struct rt_cell {
 /* The stratification of spp >= 1 samples. */
 rt_jitter rt_jitter_make(uint64_t spp);
 
+/* No cells (m = 0): every pixel position is a plain uniform point. */
+rt_jitter rt_jitter_none(void);
+
 /* The cell of sample k (the first cell for k >= m). */
 rt_cell rt_jitter_cell(const rt_jitter *jt, uint64_t k);
 
@@ -44,15 +49,18 @@ static inline double rt_jitter_in_cell(uint64_t i, uint64_t n, double u)
     return x < 1.0 ? x : nextafter(1.0, 0.0);
 }
 
-/* The camera ray of sample k of pixel (x, y): a point of its cell c while
- * k < m (c then moves on by the stride), a uniform point after. The two
- * uniforms come first from the pixel's stream. Inline: it starts every
- * path. */
-static inline rt_ray rt_sample_ray(const rt_camera *camera, const rt_jitter *jt, int x, int y,
-                                   uint64_t k, rt_cell *c, mc_rng *rng)
+/* The camera ray of sample k of pixel (x, y), which begins the sample in
+ * the pixel's sampler: a point of its cell c while k < m (c then moves on
+ * by the stride), a uniform point after. The two uniforms are the
+ * sampler's first 2D. Inline: it starts every path. */
+RT_HOT_INLINE rt_ray rt_sample_ray(const rt_camera *camera, const rt_jitter *jt, int x, int y,
+                                   uint64_t k, rt_cell *c, rt_sampler *sampler)
 {
     /* BEGIN SNIPPET sample_ray */
-    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng), jx = u1, jy = u2;
+    double u1, u2;
+    rt_sampler_start(sampler, k);
+    rt_sampler_2d(sampler, &u1, &u2);
+    double jx = u1, jy = u2;
     if (k < jt->m) {
         jx = rt_jitter_in_cell(c->i, jt->sx, u1);
         jy = rt_jitter_in_cell(c->j, jt->sy, u2);

@@ -19,11 +19,11 @@ rt_light rt_light_make(const rt_prim *p)
     return l;
 }
 
-vec3 rt_lights_generate(const rt_light *lights, int n, vec3 origin, mc_rng *rng)
+vec3 rt_lights_generate(const rt_light *lights, int n, vec3 origin, rt_sampler *sampler)
 {
     rt_lights_at at;
     rt_lights_prepare(&at, lights, n, origin);
-    return rt_lights_at_generate(&at, rng);
+    return rt_lights_at_generate(&at, sampler);
 }
 
 double rt_lights_value(const rt_light *lights, int n, vec3 origin, vec3 d)

@@ -9,7 +9,8 @@
  * point and evaluates the same densities here, through the formulas of
  * pdf/pdf.h (pdf_quad_density, pdf_sphere_cone, ...), which the pdf
  * objects use too: every function below draws the same uniforms in the
- * same order as the pdf object it replaces (pdf_list of pdf_toward_quad /
+ * same order as the pdf object it replaces (from a sampler that draws
+ * from a PCG32 stream, the same numbers as pdf_generate from that stream) (pdf_list of pdf_toward_quad /
  * pdf_toward_sphere, and pdf_cosine) and computes the same bits;
  * tests/test_render_pdf.c checks the values and directions for bitwise
  * equality and renders images both ways. The pdf objects remain the
@@ -21,7 +22,7 @@
 #include <math.h>
 
 #include "mc/onb.h"
-#include "mc/rng.h"
+#include "render/sampler.h"
 #include "mc/vec3.h"
 #include "pdf/pdf.h"
 #include "render/shapes.h"
@@ -41,7 +42,7 @@ rt_light rt_light_make(const rt_prim *p);
 
 /* pdf_generate of pdf_list over pdf_toward_quad / pdf_toward_sphere from
  * origin to lights[0..n) (n >= 1): a unit direction. */
-vec3 rt_lights_generate(const rt_light *lights, int n, vec3 origin, mc_rng *rng);
+vec3 rt_lights_generate(const rt_light *lights, int n, vec3 origin, rt_sampler *sampler);
 
 /* pdf_value of the same list for the unit direction d: per unit solid
  * angle, the average over the lights. */
@@ -101,10 +102,11 @@ static inline vec3 rt_light_generate(const rt_light *l, vec3 origin, vec3 axis,
 
 /* rt_lights_generate from the prepared origin: the same direction from
  * the same uniforms. */
-static inline vec3 rt_lights_at_generate(const rt_lights_at *at, mc_rng *rng)
+RT_HOT_INLINE vec3 rt_lights_at_generate(const rt_lights_at *at, rt_sampler *sampler)
 {
-    uint32_t i = mc_rng_bounded(rng, (uint32_t)at->n);
-    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    uint32_t i = rt_sampler_index(sampler, (uint32_t)at->n);
+    double u1, u2;
+    rt_sampler_2d(sampler, &u1, &u2);
     return rt_light_generate(&at->lights[i], at->origin, at->axis[i], at->one_minus_cos[i], u1, u2);
 }
 
@@ -131,9 +133,10 @@ static inline double rt_lights_at_value(const rt_lights_at *at, vec3 d)
 }
 
 /* pdf_generate of pdf_cosine(normal) (unit normal). */
-static inline vec3 rt_cosine_generate(vec3 normal, mc_rng *rng)
+RT_HOT_INLINE vec3 rt_cosine_generate(vec3 normal, rt_sampler *sampler)
 {
-    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    double u1, u2;
+    rt_sampler_2d(sampler, &u1, &u2);
     onb frame = onb_from_w(normal);
     return pdf_cosine_direction(&frame, u1, u2);
 }

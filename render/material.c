@@ -131,8 +131,8 @@ double rt_fresnel_schlick_book(double cos_i, double n1, double n2)
  * along the surface in rt_refract (cos theta_t = sqrt(0) = 0), hence the
  * 0 there. */
 /* BEGIN SNIPPET scatter_glass */
-static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *h, mc_rng *rng,
-                          rt_scatter *s)
+static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *h,
+                          rt_sampler *sampler, rt_scatter *s)
 {
     double n1 = h->front_face ? 1.0 : m->ior, n2 = h->front_face ? m->ior : 1.0;
     double eta = h->front_face ? m->inv_ior : m->ior; /* n1 / n2 exactly (ior / 1 = ior) */
@@ -150,7 +150,7 @@ static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *
     else
         r = sin2_t >= 1.0 ? 1.0 : schlick(m->schlick_r0, cos_t);
     vec3 dir;
-    if (r >= 1.0 || mc_rng_uniform(rng) < r || sin2_t > 1.0)
+    if (r >= 1.0 || rt_sampler_1d(sampler) < r || sin2_t > 1.0)
         dir = vec3_madd(d, n, -2.0 * d_n); /* rt_reflect */
     else /* rt_refract: Snell for the tangential part, Pythagoras for the normal one */
         dir = vec3_madd(vec3_scale(vec3_madd(d, n, cos_i), eta), n, -cos_t);
@@ -166,17 +166,18 @@ static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *
 /* END SNIPPET scatter_glass */
 
 bool rt_material_scatter_specular(const rt_material *m, const rt_ray *in, const rt_hit *h,
-                                  mc_rng *rng, rt_scatter *s)
+                                  rt_sampler *sampler, rt_scatter *s)
 {
     if (m->kind == RT_MAT_DIELECTRIC) {
-        scatter_glass(m, in, h, rng, s);
+        scatter_glass(m, in, h, sampler, s);
         return true;
     }
     if (m->kind != RT_MAT_METAL)
-        return rt_material_scatter(m, in, h, rng, s); /* light, Lambert */
+        return rt_material_scatter(m, in, h, sampler, s); /* light, Lambert */
     vec3 dir = rt_reflect(in->dir, h->normal);
     if (m->fuzz > 0.0) {
-        double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+        double u1, u2;
+        rt_sampler_2d(sampler, &u1, &u2);
         dir = vec3_add(dir, vec3_scale(smp_uniform_sphere_sample(u1, u2), m->fuzz));
         /* Fuzz may push the ray under the surface: absorbed, as in the
          * first book. */

@@ -17,7 +17,7 @@
 #include <stdbool.h>
 
 #include "mc/constants.h"
-#include "mc/rng.h"
+#include "render/sampler.h"
 #include "mc/vec3.h"
 #include "pdf/pdf.h"
 #include "render/ray.h"
@@ -83,16 +83,16 @@ static inline vec3 rt_material_emitted(const rt_material *m, const rt_hit *h)
 
 /* rt_material_scatter for metal and glass (the specular kinds). */
 bool rt_material_scatter_specular(const rt_material *m, const rt_ray *in, const rt_hit *h,
-                                  mc_rng *rng, rt_scatter *s);
+                                  rt_sampler *sampler, rt_scatter *s);
 
 /* Fills *s for the ray *in scattered at h; returns false when the
  * material absorbs it (a light, or fuzzed metal sent below the surface).
- * Draws uniforms from rng only for specular events. Inline, with the
+ * Draws uniforms from sampler only for specular events. Inline, with the
  * diffuse case first: it follows every hit, and most hits in the Cornell
  * box are diffuse. The ray goes by pointer (docs/performance.md says
  * why). */
 static inline bool rt_material_scatter(const rt_material *m, const rt_ray *in, const rt_hit *h,
-                                       mc_rng *rng, rt_scatter *s)
+                                       rt_sampler *sampler, rt_scatter *s)
 {
     if (m->kind == RT_MAT_LAMBERT) {
         s->specular = false;
@@ -102,7 +102,7 @@ static inline bool rt_material_scatter(const rt_material *m, const rt_ray *in, c
     }
     if (m->kind == RT_MAT_LIGHT)
         return false;
-    return rt_material_scatter_specular(m, in, h, rng, s);
+    return rt_material_scatter_specular(m, in, h, sampler, s);
 }
 
 /* The chapter-3 scattering pdf s(direction) of a diffuse material at h for

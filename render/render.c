@@ -28,16 +28,16 @@ static void render_row(const rt_render_job *job, rt_image *img, mc_rng *streams,
     int w = img->width;
     for (int x = 0; x < w; x++) {
         size_t idx = (size_t)y * (size_t)w + (size_t)x;
-        mc_rng rng = streams[idx];
+        rt_sampler sampler = rt_render_sampler(job, streams[idx], idx);
         rt_pixel *px = &img->px[idx];
         rt_cell c = c0;
         for (uint64_t k = k0; k < k1; k++) {
-            rt_ray r = rt_sample_ray(&job->camera, jt, x, y, k, &c, &rng);
-            vec3 L = rt_radiance(job->scene, &job->path, r, &rng, segments);
+            rt_ray r = rt_sample_ray(&job->camera, jt, x, y, k, &c, &sampler);
+            vec3 L = rt_radiance(job->scene, &job->path, r, &sampler, segments);
             if (!rt_pixel_add(px, L))
                 ++*dropped;
         }
-        streams[idx] = rng;
+        streams[idx] = sampler.rng;
     }
 }
 /* END SNIPPET render_row */
@@ -93,10 +93,18 @@ static void render_pass(const rt_render_job *job, rt_image *img, mc_rng *streams
     }
 }
 
+rt_sampler rt_render_sampler(const rt_render_job *job, mc_rng rng, uint64_t pixel)
+{
+    rt_sampler s = rt_sampler_pixel(job->sampler, job->seed, job->spp, rng, pixel);
+    s.reuse_dim = job->sampler_reuse_dim;
+    return s;
+}
+
 int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
 {
     if (!job->scene || job->spp < 1 || job->camera.width != img->width ||
-        job->camera.height != img->height || job->path.max_depth < 0)
+        job->camera.height != img->height || job->path.max_depth < 0 ||
+        (job->sampler == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX))
         return -1;
     /* BEGIN SNIPPET render_streams */
     size_t npix = (size_t)img->width * (size_t)img->height;
@@ -106,7 +114,7 @@ int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
     for (size_t i = 0; i < npix; i++)
         streams[i] = mc_rng_derive(job->seed, (uint64_t)i);
     rt_image_clear(img);
-    rt_jitter jt = rt_jitter_make(job->spp);
+    rt_jitter jt = job->sampler == RT_SAMPLER_STRATIFIED ? rt_jitter_make(job->spp) : rt_jitter_none();
     /* Passes of at most 16 samples per pixel keep a row short enough for
      * the cancel flag to be answered within milliseconds. */
     uint64_t per = job->pass_spp ? job->pass_spp : (job->spp < 16 ? job->spp : 16);

@@ -12,7 +12,11 @@
  *   the pixel.
  * - Each pixel draws from its own stream mc_rng_derive(seed, pixel index),
  *   and each pixel's samples are added in a fixed order: the image is
- *   bit-identical for any number of threads.
+ *   bit-identical for any number of threads. That is the default sampler,
+ *   stratified; rt_render_job.sampler may instead draw every uniform from
+ *   the stream (independent) or from Owen-scrambled Sobol points hashed
+ *   from (seed, pixel, dimension) (sobol), which depend on the sample's
+ *   index alone and are as reproducible (render/sampler.h).
  * - The samples are taken in passes over the whole image, so a render
  *   stopped early (the cancel flag, checked between image rows) still holds
  *   a complete picture in which each pixel's mean is unbiased: the rows
@@ -23,7 +27,8 @@
  *   one four-ray query and evaluating their light densities in vector
  *   lanes (render/fast/rows.h); each pixel still consumes its own stream in the same
  *   order, so the image is the one of one path at a time, bit for bit
- *   (rt_render_job.one_path_at_a_time keeps that reference).
+ *   (rt_render_job.one_path_at_a_time keeps that reference). So does
+ *   every sampler.
  * Library code never prints; progress goes to a caller's callback.
  */
 #ifndef RT_RENDER_H
@@ -36,6 +41,7 @@
 #include "render/camera.h"
 #include "render/image.h"
 #include "render/integrator.h"
+#include "render/sampler.h"
 #include "render/scene.h"
 
 /* How far a render has got. */
@@ -64,6 +70,11 @@ typedef struct rt_render_job {
      * at a time instead: the same image bit for bit, kept as the
      * reference the tests compare against. */
     bool one_path_at_a_time;
+    rt_sampler_kind sampler; /* default stratified; sobol needs spp < 2^32 */
+    /* Negative-control hook (render/sampler.h): with sobol, a 1D request
+     * does not move on to the next dimension. False in a correct
+     * renderer. */
+    bool sampler_reuse_dim;
 } rt_render_job;
 
 typedef struct rt_render_stats {
@@ -75,12 +86,17 @@ typedef struct rt_render_stats {
 } rt_render_stats;
 
 /* A job with the book's defaults for the scene and camera: strategy
- * mixture, max depth 50, 100 spp, seed 1, all threads. */
+ * mixture, max depth 50, 100 spp, seed 1, all threads, the stratified
+ * sampler. */
 rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera);
 
 /* Clears img and renders job into it; *stats (may be NULL) receives the
  * totals. Returns 0 when complete, 1 when cancelled (img then holds
  * stats->paths samples), -1 on bad arguments or out of memory. */
 int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats);
+
+/* The sampler of pixel `pixel` of the job, continuing its stream rng
+ * (for the row loops). */
+rt_sampler rt_render_sampler(const rt_render_job *job, mc_rng rng, uint64_t pixel);
 
 #endif /* RT_RENDER_H */

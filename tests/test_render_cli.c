@@ -99,7 +99,8 @@ static void test_cli_bad_input(void **state)
     const char *b = mc_test_build_dir();
     const char *bad[] = {"--scene nope", "--strategy nope", "--width 0", "--spp 0",
                          "--max-depth -1", "-o /nonexistent-dir/x.png", "-o %s/x.jpg",
-                         "--gamma 3", "--threads -2", "--frobnicate", "stray"};
+                         "--gamma 3", "--threads -2", "--frobnicate", "stray", "--sampler nope",
+                         "--sampler sobol --spp 5e9", "--reference", "--reference %s/no-such.pfm"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char opt[512];
         snprintf(opt, sizeof opt, bad[i], b);
@@ -302,6 +303,74 @@ static void test_cli_refusals_keep_old_file(void **state)
     rmdir(dir);
 }
 
+/* Every sampler writes the same file with one thread and with two. */
+static void test_cli_samplers_thread_count(void **state)
+{
+    (void)state;
+    char out[4096], err[4096], args[2048], p1[1024], p2[1024], b1[65536], b2[65536];
+    const char *b = mc_test_build_dir();
+    static const char *const samplers[3] = {"independent", "stratified", "sobol"};
+    snprintf(p1, sizeof p1, "%s/cli_s1.pfm", b);
+    snprintf(p2, sizeof p2, "%s/cli_s2.pfm", b);
+    for (int i = 0; i < 3; i++) {
+        snprintf(args, sizeof args, "--scene book --width 16 --spp 6 --sampler %s --threads 1 -o %s",
+                 samplers[i], p1);
+        assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+        snprintf(args, sizeof args, "--scene book --width 16 --spp 6 --sampler %s --threads 2 -o %s",
+                 samplers[i], p2);
+        assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+        long n1 = slurp(p1, b1, sizeof b1), n2 = slurp(p2, b2, sizeof b2);
+        if (n1 <= 0 || n1 != n2 || memcmp(b1, b2, (size_t)n1) != 0)
+            fail_msg("--sampler %s: 1 and 2 threads give different files", samplers[i]);
+    }
+    remove(p1);
+    remove(p2);
+}
+
+/* --reference: against the image the same command wrote, the RMSE is
+ * only the float rounding of the file (below 1e-6 of values near 1);
+ * against another seed's, it is positive; a missing file, a file that is
+ * not a PFM and a PFM of another size each give exit 2 and one line,
+ * before any rendering. */
+static void test_cli_reference(void **state)
+{
+    (void)state;
+    char out[4096], err[4096], args[2048], ref[1024], txt[1024];
+    const char *b = mc_test_build_dir();
+    snprintf(ref, sizeof ref, "%s/cli_ref.pfm", b);
+    snprintf(txt, sizeof txt, "%s/cli_ref.txt", b);
+    snprintf(args, sizeof args, "--scene lambert --width 8 --spp 4 --threads 1 -o %s", ref);
+    assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+    for (int seed = 1; seed <= 2; seed++) {
+        snprintf(args, sizeof args,
+                 "--scene lambert --width 8 --spp 4 --seed %d --threads 2 --reference %s -o %s/cli_r.pfm",
+                 seed, ref, b);
+        assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+        const char *at = strstr(out, "pixel RMSE ");
+        assert_non_null(at);
+        double rmse = -1.0, mse = -1.0;
+        assert_int_equal(sscanf(at, "pixel RMSE %lf, MSE %lf", &rmse, &mse), 2);
+        assert_near(rmse * rmse, mse, 1e-6 * mse);
+        if (seed == 1 ? !(rmse < 1e-6) : !(rmse > 1e-3))
+            fail_msg("seed %d: RMSE %g against the seed-1 image", seed, rmse);
+    }
+    write_text(txt, "not an image\n");
+    const char *refs[3] = {"%s/no-such.pfm", "%s/cli_ref.txt", "%s/cli_ref.pfm"};
+    for (int i = 0; i < 3; i++) {
+        char r[1024];
+        snprintf(r, sizeof r, refs[i], b);
+        snprintf(args, sizeof args, "--scene lambert --width %d --spp 4 --reference %s -o %s/cli_r.pfm",
+                 i == 2 ? 9 : 8, r, b);
+        int rc = run(args, out, sizeof out, err, sizeof err);
+        if (rc != 2 || out[0] || count_lines(err) != 1 || strncmp(err, "cornell_box: ", 13) != 0)
+            fail_msg("--reference %s: exit %d, stdout '%s', stderr '%s'", r, rc, out, err);
+    }
+    remove(ref);
+    remove(txt);
+    snprintf(args, sizeof args, "%s/cli_r.pfm", b);
+    remove(args);
+}
+
 /* The furnace prints its exact value, E (1 - rho^D) / (1 - rho) = 1 - 2^-50
  * for the named scene at depth 50, and a z that must be below 4 (seed 1,
  * 8 x 8 pixels, 16 samples each; false-alarm rate 6.3e-5); the lambert
@@ -344,6 +413,8 @@ int main(void)
         cmocka_unit_test(test_cli_write_error_keeps_old_file),
         cmocka_unit_test(test_cli_refusals_keep_old_file),
         cmocka_unit_test(test_cli_furnace_prints_exact),
+        cmocka_unit_test(test_cli_samplers_thread_count),
+        cmocka_unit_test(test_cli_reference),
     };
     return cmocka_run_group_tests_name("test_render_cli", tests, NULL, NULL);
 }

@@ -109,12 +109,12 @@ static double sphere_light_expected(double phi, double h, double rho, double x, 
 static mc_estimate radiance_at(const rt_scene *s, const rt_path_settings *ps, double x, double z,
                                int n, uint64_t seed)
 {
-    mc_rng rng = mc_rng_derive(seed, 0u);
+    rt_sampler sampler = rt_sampler_from_rng(mc_rng_derive(seed, 0u));
     mc_welford w = mc_welford_init();
     uint64_t segments = 0;
     rt_ray r = rt_ray_make(v3(x, 1.0, z), v3(0, -1, 0));
     for (int i = 0; i < n; i++)
-        mc_welford_add(&w, rt_radiance(s, ps, r, &rng, &segments).y);
+        mc_welford_add(&w, rt_radiance(s, ps, r, &sampler, &segments).y);
     return mc_welford_estimate(&w);
 }
 

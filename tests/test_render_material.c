@@ -119,7 +119,7 @@ static void test_dielectric_reflects_with_fresnel_probability(void **state)
 {
     (void)state;
     uint64_t seed = mc_test_seed(22u);
-    mc_rng rng = mc_rng_derive(seed, 0u);
+    rt_sampler sampler = rt_sampler_from_rng(mc_rng_derive(seed, 0u));
     rt_material glass = rt_dielectric(1.5, RT_FRESNEL_EXACT);
     double ci = 0.2, si = sqrt(1.0 - ci * ci);
     rt_hit h = {.t = 1.0, .p = v3(0, 0, 0), .normal = v3(0, 0, 1), .front_face = true};
@@ -128,7 +128,7 @@ static void test_dielectric_reflects_with_fresnel_probability(void **state)
     int reflected = 0;
     for (int i = 0; i < n; i++) {
         rt_scatter s;
-        assert_true(rt_material_scatter(&glass, &in, &h, &rng, &s));
+        assert_true(rt_material_scatter(&glass, &in, &h, &sampler, &s));
         assert_true(s.specular);
         reflected += s.ray.dir.z > 0.0;
     }
@@ -147,18 +147,18 @@ static void test_dielectric_reflects_with_fresnel_probability(void **state)
 static void test_dielectric_directions_stay_unit(void **state)
 {
     (void)state;
-    mc_rng rng = mc_rng_derive(23u, 0u);
+    rt_sampler sampler = rt_sampler_from_rng(mc_rng_derive(23u, 0u));
     rt_material glass[2] = {rt_dielectric(1.5, RT_FRESNEL_SCHLICK), rt_dielectric(2.4, RT_FRESNEL_EXACT)};
     vec3 dir = v3(0, 0, -1);
     double worst = 0.0;
     for (int i = 0; i < 1000000; i++) {
-        vec3 n = smp_uniform_sphere_sample(mc_rng_uniform(&rng), mc_rng_uniform(&rng));
+        vec3 n = smp_uniform_sphere_sample(mc_rng_uniform(&sampler.rng), mc_rng_uniform(&sampler.rng));
         bool front = vec3_dot(dir, n) < 0.0;
         rt_hit h = {.t = 1.0, .p = v3(0, 0, 0), .normal = front ? n : vec3_neg(n), .front_face = front};
         if (vec3_dot(dir, h.normal) == 0.0)
             continue;
         rt_scatter s;
-        assert_true(rt_material_scatter(&glass[i & 1], &(rt_ray){v3(0, 0, 0), dir}, &h, &rng, &s));
+        assert_true(rt_material_scatter(&glass[i & 1], &(rt_ray){v3(0, 0, 0), dir}, &h, &sampler, &s));
         double cos_in = -vec3_dot(dir, h.normal), cos_out = vec3_dot(s.ray.dir, h.normal);
         if (cos_out > 0.0) /* reflected: the same angle */
             assert_true(fabs(cos_out - cos_in) < 1e-12);
@@ -194,8 +194,8 @@ static void test_lambert_metal_light(void **state)
     rt_scatter s;
     assert_false(rt_material_scatter(&light, &(rt_ray){v3(0, 0, 1), v3(0, 0, -1)}, &h, NULL, &s));
     rt_material al = rt_metal(v3(0.8, 0.85, 0.88), 0.0);
-    mc_rng rng = mc_rng_derive(23u, 0u);
-    assert_true(rt_material_scatter(&al, &(rt_ray){v3(-0.6, 0, 0.8), v3(0.6, 0, -0.8)}, &h, &rng, &s));
+    rt_sampler sampler = rt_sampler_from_rng(mc_rng_derive(23u, 0u));
+    assert_true(rt_material_scatter(&al, &(rt_ray){v3(-0.6, 0, 0.8), v3(0.6, 0, -0.8)}, &h, &sampler, &s));
     assert_true(s.specular);
     assert_near(s.ray.dir.x, 0.6, 1e-15);
     assert_near(s.ray.dir.z, 0.8, 1e-15);

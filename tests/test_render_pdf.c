@@ -36,10 +36,11 @@ static void check_lights(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed, int
         pdf items[RT_MAX_LIGHTS];
         const pdf *ptrs[RT_MAX_LIGHTS];
         pdf list = rt_scene_lights_pdf(s, o, items, ptrs);
-        mc_rng a = rng, b = rng;
+        mc_rng a = rng;
+        rt_sampler b = rt_sampler_from_rng(rng);
         vec3 da = pdf_generate(&list, &a), db = rt_lights_generate(fast, n, o, &b);
         assert_true(same_vec(da, db));
-        assert_true(a.state == b.state);
+        assert_true(a.state == b.rng.state);
         rng = a;
         /* The value at the generated direction and at a random one. */
         double vg = pdf_value(&list, da);
@@ -53,9 +54,9 @@ static void check_lights(const rt_scene *s, vec3 lo, vec3 hi, uint64_t seed, int
         /* The cosine pdf about a random normal. */
         pdf cosine = pdf_cosine(d);
         a = rng;
-        b = rng;
+        b = rt_sampler_from_rng(rng);
         vec3 ca = pdf_generate(&cosine, &a), cb = rt_cosine_generate(d, &b);
-        assert_true(same_vec(ca, cb) && a.state == b.state);
+        assert_true(same_vec(ca, cb) && a.state == b.rng.state);
         rng = a;
         assert_true(pdf_value(&cosine, da) == rt_cosine_value(d, da));
     }
@@ -113,10 +114,10 @@ static void check_lights4(rt_isa isa, const rt_scene *s, vec3 lo, vec3 hi, uint6
                 assert_true(at4.one_minus_cos[i][k] == one[k].one_minus_cos[i]);
                 assert_true(at4.cone[i][k] == one[k].cone[i]);
             }
-            mc_rng a = rng, b = rng;
+            rt_sampler a = rt_sampler_from_rng(rng), b = a;
             vec3 ga = rt_lights4_generate(&at4, k, &a), gb = rt_lights_at_generate(&one[k], &b);
-            assert_true(same_vec(ga, gb) && a.state == b.state);
-            rng = a;
+            assert_true(same_vec(ga, gb) && a.rng.state == b.rng.state);
+            rng = a.rng;
             int kind = (it + k) % 3;
             if (kind == 0) {
                 d[k] = ga;

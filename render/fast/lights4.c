@@ -40,10 +40,11 @@ void rt_lights4_lane(const rt_lights4 *at, int k, rt_lights_at *out)
     }
 }
 
-vec3 rt_lights4_generate(const rt_lights4 *at, int k, mc_rng *rng)
+vec3 rt_lights4_generate(const rt_lights4 *at, int k, rt_sampler *sampler)
 {
-    uint32_t i = mc_rng_bounded(rng, (uint32_t)at->n);
-    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
+    uint32_t i = rt_sampler_index(sampler, (uint32_t)at->n);
+    double u1, u2;
+    rt_sampler_2d(sampler, &u1, &u2);
     return rt_light_generate(&at->lights[i], vec3_make(at->ox[k], at->oy[k], at->oz[k]),
                              vec3_make(at->ax[i][k], at->ay[i][k], at->az[i][k]),
                              at->one_minus_cos[i][k], u1, u2);

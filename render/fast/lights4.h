@@ -49,6 +49,6 @@ void rt_lights4_value(rt_isa isa, const rt_lights4 *at, const vec3 d[RT_LANES],
 void rt_lights4_lane(const rt_lights4 *at, int k, rt_lights_at *out);
 
 /* rt_lights_at_generate of lane k: the same draws, the same direction. */
-vec3 rt_lights4_generate(const rt_lights4 *at, int k, mc_rng *rng);
+vec3 rt_lights4_generate(const rt_lights4 *at, int k, rt_sampler *sampler);
 
 #endif /* RT_FAST_LIGHTS4_H */

@@ -7,13 +7,13 @@
 #include "render/fast/hit4.h"
 #include "render/fast/lights4.h"
 
-/* One lane of rt_fast_render_row: the pixel it works on, that pixel's stream and
+/* One lane of rt_fast_render_row: the pixel it works on, that pixel's sampler and
  * next sample, and the path of the current sample. */
 typedef struct lane {
     int x;      /* -1: idle */
     uint64_t k;
     rt_cell c;
-    mc_rng rng;
+    rt_sampler sampler;
     rt_path_state path;
 } lane;
 
@@ -26,8 +26,10 @@ static void lane_take(lane *l, const rt_render_job *job, const rt_jitter *jt, mc
         return;
     l->k = k0;
     l->c = c0;
-    l->rng = streams[(size_t)y * (size_t)w + (size_t)x];
-    l->path = rt_path_begin(&job->path, rt_sample_ray(&job->camera, jt, x, y, k0, &l->c, &l->rng));
+    size_t idx = (size_t)y * (size_t)w + (size_t)x;
+    l->sampler = rt_render_sampler(job, streams[idx], idx);
+    l->path = rt_path_begin(&job->path,
+                            rt_sample_ray(&job->camera, jt, x, y, k0, &l->c, &l->sampler));
 }
 
 /* The second half of the step of the lanes in `diffuse` (a bit per lane),
@@ -44,7 +46,7 @@ static void turn_diffuse(const rt_render_job *job, rt_isa isa, lane *lanes,
     if (!rt_path_batches_lights(s, &job->path)) {
         for (int i = 0; i < RT_LANES; i++)
             if ((diffuse >> i) & 1u)
-                rt_path_continue(s, &job->path, &lanes[i].path, &verts[i], &lanes[i].rng);
+                rt_path_continue(s, &job->path, &lanes[i].path, &verts[i], &lanes[i].sampler);
         return;
     }
     vec3 at_p[RT_LANES];
@@ -54,12 +56,13 @@ static void turn_diffuse(const rt_render_job *job, rt_isa isa, lane *lanes,
     rt_lights4_prepare(isa, &at4, rt_scene_lights(s), rt_scene_light_count(s), at_p);
     for (int i = 0; i < RT_LANES; i++)
         if ((diffuse >> i) & 1u)
-            dirs[i] = rt_path_draw(&job->path, &verts[i], &at4, i, &lanes[i].rng);
+            dirs[i] = rt_path_draw(&job->path, &verts[i], &at4, i, &lanes[i].sampler);
     double values[RT_LANES];
     rt_lights4_value(isa, &at4, dirs, values);
     for (int i = 0; i < RT_LANES; i++)
         if ((diffuse >> i) & 1u)
-            rt_path_finish(&job->path, &lanes[i].path, &verts[i], dirs[i], values[i], &lanes[i].rng);
+            rt_path_finish(&job->path, &lanes[i].path, &verts[i], dirs[i], values[i],
+                               &lanes[i].sampler);
 }
 /* END SNIPPET turn_diffuse */
 
@@ -107,10 +110,11 @@ void rt_fast_render_row(const rt_render_job *job, rt_image *img, mc_rng *streams
                 size_t idx = (size_t)y * (size_t)w + (size_t)l->x;
                 drop += !rt_pixel_add(&img->px[idx], l->path.L);
                 if (++l->k < k1) {
-                    l->path = rt_path_begin(&job->path, rt_sample_ray(&job->camera, jt, l->x, y, l->k, &l->c, &l->rng));
+                    l->path = rt_path_begin(&job->path, rt_sample_ray(&job->camera, jt, l->x, y,
+                                                                      l->k, &l->c, &l->sampler));
                     continue;
                 }
-                streams[idx] = l->rng;
+                streams[idx] = l->sampler.rng;
                 lane_take(l, job, jt, streams, y, next, w, k0, c0);
                 next += next < w;
                 if (l->x < 0) {
@@ -134,7 +138,7 @@ void rt_fast_render_row(const rt_render_job *job, rt_image *img, mc_rng *streams
             lane *l = &lanes[i];
             seg++;
             diffuse |= (unsigned)rt_path_scatter(job->scene, &job->path, &l->path,
-                                                 (hit >> i) & 1u ? &hits[i] : NULL, &l->rng,
+                                                 (hit >> i) & 1u ? &hits[i] : NULL, &l->sampler,
                                                  &verts[i])
                        << i;
         }

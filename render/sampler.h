@@ -1,0 +1,161 @@
+/* render/sampler.h - where the uniforms of a path come from.
+ *
+ * Every random number the renderer draws for one sample of one pixel goes
+ * through a sampler: "the next 1D" or "the next 2D" of this sample. Three
+ * kinds:
+ *   RT_SAMPLER_STRATIFIED  the pixel position jittered over a grid of cells
+ *                          (render/jitter.h, chapter 10 "The Cornell Box"),
+ *                          every other draw from the pixel's PCG32 stream;
+ *                          the default
+ *   RT_SAMPLER_INDEPENDENT every draw, the pixel position too, from the
+ *                          pixel's PCG32 stream
+ *   RT_SAMPLER_SOBOL       Owen-scrambled Sobol points, padded as pbrt-v4's
+ *                          PaddedSobolSampler pads them: each 1D or 2D
+ *                          request of sample k of pixel p is the first or
+ *                          the first two dimensions of Sobol point
+ *                          perm(k), with the index permutation perm and the
+ *                          Owen scrambles keyed by a hash of (seed, p,
+ *                          dimension) (mc_sobol_padded2's construction,
+ *                          with the pixel's part of the hash computed once
+ *                          per pixel). Each request is a stratified set
+ *                          over the pixel's samples; requests differ in
+ *                          their permutations and scrambles, which makes
+ *                          them independent of one another, so the
+ *                          estimate stays unbiased.
+ * The two PCG32 kinds draw one PCG32 output per uniform, in the order of
+ * the requests, from a stream continued over the passes (render/render.c).
+ *
+ * Dimensions of a Sobol sample: the pixel position takes 0 and 1; the
+ * draws made for the vertex after segment d (the scattering there, the
+ * next direction, a shadow ray, Russian roulette) take the block of
+ * RT_SAMPLER_SEGMENT_DIMS dimensions from 2 + d RT_SAMPLER_SEGMENT_DIMS
+ * on, in the order they are made. Aligning the blocks with the segments
+ * keeps the same dimension for the same decision in most samples (the
+ * first bounce's light choice is the same dimension in every sample),
+ * which is where a low-discrepancy set can beat independent points.
+ */
+#ifndef RT_SAMPLER_H
+#define RT_SAMPLER_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "mc/rng.h"
+
+typedef enum rt_sampler_kind {
+    RT_SAMPLER_STRATIFIED, /* 0, so that a zeroed job keeps the default */
+    RT_SAMPLER_INDEPENDENT,
+    RT_SAMPLER_SOBOL
+} rt_sampler_kind;
+
+/* The names "stratified", "independent", "sobol" in rt_sampler_kind
+ * order, NULL-terminated (for option tables and help text). */
+extern const char *const rt_sampler_names[];
+
+/* The kind named `name`; false for anything else. */
+bool rt_sampler_parse(const char *name, rt_sampler_kind *out);
+
+/* The name of a kind. */
+const char *rt_sampler_name(rt_sampler_kind kind);
+
+/* Most dimensions the draws at one path vertex can take: 8 covers the
+ * most any vertex draws (next-event estimation: light choice 1, point on
+ * the light 2, material direction 2, roulette 1; the book's mixture:
+ * component 1, light choice 1, direction 2, roulette 1; glass 1; metal
+ * fuzz 2 and roulette 1). */
+#define RT_SAMPLER_SEGMENT_DIMS 8u
+
+/* The sampler of one pixel while it takes one sample. */
+typedef struct rt_sampler {
+    mc_rng rng;   /* the pixel's PCG32 stream: every draw unless sobol */
+    bool sobol;   /* draws come from the padded Sobol points */
+    /* Negative-control hook: a 1D request leaves the dimension where it
+     * was, so that the request after it gets the same point (a dimension
+     * dropped). False in a correct renderer. */
+    bool reuse_dim;
+    uint32_t dim; /* sobol: the next dimension of this sample */
+    uint32_t k, n; /* sobol: this sample's index and the pixel's sample count */
+    uint64_t base; /* sobol: mc_qmc_stream_seed(seed, pixel) */
+} rt_sampler;
+
+/* A sampler drawing every uniform from rng (independent and stratified,
+ * and the tests' way to call the integrator with a stream). */
+static inline rt_sampler rt_sampler_from_rng(mc_rng rng)
+{
+    rt_sampler s = {rng, false, false, 0, 0, 1, 0};
+    return s;
+}
+
+/* The sampler of pixel `pixel` of a render of kind `kind` with `seed`
+ * and spp samples per pixel (sobol: 1 <= spp < 2^32), continuing the
+ * pixel's PCG32 stream rng. */
+rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, mc_rng rng,
+                            uint64_t pixel);
+
+/* Begins sample k (< spp) of the pixel: sobol starts again at dimension
+ * 0; the PCG32 kinds go on in their stream. */
+static inline void rt_sampler_start(rt_sampler *s, uint64_t k)
+{
+    if (s->sobol) {
+        s->k = (uint32_t)k;
+        s->dim = 0;
+    }
+}
+
+/* Moves to the dimensions of the vertex after segment `depth` (>= 0) of
+ * the current path (see the top of this file); nothing for PCG32. */
+static inline void rt_sampler_segment(rt_sampler *s, int depth)
+{
+    if (s->sobol)
+        s->dim = 2u + (uint32_t)depth * RT_SAMPLER_SEGMENT_DIMS;
+}
+
+/* For the draws below and the functions that make them at every path
+ * vertex (the camera ray, the cosine direction, the light list's
+ * direction): inline even where the compiler's size heuristics would not.
+ * The sampler's branch grew them past gcc's limit, and the calls cost the
+ * default sampler 3% more instructions in the book render; inlined, it
+ * takes 1% fewer than before the samplers (docs/performance.md). */
+#if defined(__GNUC__)
+#define RT_HOT_INLINE static inline __attribute__((always_inline))
+#else
+#define RT_HOT_INLINE static inline
+#endif
+
+/* The Sobol requests, out of line: they hash and scramble. */
+double rt_sampler_sobol_1d(rt_sampler *s);
+void rt_sampler_sobol_2d(rt_sampler *s, double *u1, double *u2);
+
+/* The next uniform in [0, 1) of the sample. */
+RT_HOT_INLINE double rt_sampler_1d(rt_sampler *s)
+{
+    if (!s->sobol)
+        return mc_rng_uniform(&s->rng);
+    return rt_sampler_sobol_1d(s);
+}
+
+/* The next two uniforms in [0, 1) of the sample; for PCG32, *u1 is drawn
+ * first. */
+RT_HOT_INLINE void rt_sampler_2d(rt_sampler *s, double *u1, double *u2)
+{
+    if (!s->sobol) {
+        *u1 = mc_rng_uniform(&s->rng);
+        *u2 = mc_rng_uniform(&s->rng);
+        return;
+    }
+    rt_sampler_sobol_2d(s, u1, u2);
+}
+
+/* A uniformly chosen integer in [0, n), n >= 1: PCG32's unbiased bounded
+ * draw (mc_rng_bounded), or floor(n u) of the next 1D (u one of the 2^32
+ * equally likely multiples of 2^-32: each integer's probability is off
+ * from 1 / n by less than 2^-32, far below any error bar). */
+RT_HOT_INLINE uint32_t rt_sampler_index(rt_sampler *s, uint32_t n)
+{
+    if (!s->sobol)
+        return mc_rng_bounded(&s->rng, n);
+    uint32_t i = (uint32_t)(rt_sampler_sobol_1d(s) * (double)n);
+    return i < n ? i : n - 1u;
+}
+
+#endif /* RT_SAMPLER_H */
