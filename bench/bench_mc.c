@@ -153,7 +153,7 @@ static double q_padded(void *ctx, uint64_t n, mc_rng *rng)
     double acc = 0.0, u[2];
     for (uint64_t i = 0; i < points; i++) {
         for (uint32_t pair = 0; pair < QMC_DIM / 2; pair++) {
-            mc_sobol_padded2(seed, i / 64u, pair, (uint32_t)(i % 64u), 64u, u);
+            mc_sobol_padded2(mc_qmc_stream_seed(seed, i / 64u), 2u * pair, (uint32_t)(i % 64u), 64u, u);
             acc += u[0] + u[1];
         }
     }

@@ -294,19 +294,25 @@ uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key)
     return (uint32_t)(r >= n ? r - n : r);
 }
 
-void mc_sobol_padded2(uint64_t seed, uint64_t pixel, uint32_t pair, uint32_t k, uint32_t n,
-                      double u[2])
+/* The keys of the request at dimension d: the index permutation and the
+ * first scramble take the two halves of the hash of (base, 2d), a second
+ * scramble half of that of (base, 2d + 1). Each is a full-avalanche hash
+ * (mc_qmc_stream_seed), so keys of different requests, pixels and seeds
+ * are independent. */
+double mc_sobol_padded1(uint64_t base, uint32_t dim, uint32_t k, uint32_t n)
 {
-    /* Three keys per pair: the index permutation and the two scrambles.
-     * Their sub-indices start at 2^32, above every dimension a cursor of
-     * the same (seed, pixel) can ask for, so the two never share a key. */
-    uint64_t base = mc_qmc_stream_seed(seed, pixel);
-    uint64_t slot = (UINT64_C(1) << 32) + 3u * (uint64_t)pair;
-    uint32_t index = mc_permutation_element(k, n, index_key(base, slot));
-    u[0] = (double)mc_owen_scramble_u32(mc_sobol_u32(index, 0u), index_key(base, slot + 1u)) *
-           0x1p-32;
-    u[1] = (double)mc_owen_scramble_u32(mc_sobol_u32(index, 1u), index_key(base, slot + 2u)) *
-           0x1p-32;
+    uint64_t h = mc_qmc_stream_seed(base, 2u * (uint64_t)dim);
+    uint32_t index = mc_permutation_element(k, n, (uint32_t)h);
+    return sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
+}
+
+void mc_sobol_padded2(uint64_t base, uint32_t dim, uint32_t k, uint32_t n, double u[2])
+{
+    uint64_t h = mc_qmc_stream_seed(base, 2u * (uint64_t)dim);
+    uint64_t h2 = mc_qmc_stream_seed(base, 2u * (uint64_t)dim + 1u);
+    uint32_t index = mc_permutation_element(k, n, (uint32_t)h);
+    u[0] = sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
+    u[1] = sobol_owen_keyed(index, 1u, (uint32_t)h2);
 }
 
 unsigned mc_qmc_max_dim(mc_qmc_method method)

@@ -102,18 +102,21 @@ double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
  * bijection of {0, ..., n-1} for every key. */
 uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key);
 
-/* Padded Owen-scrambled Sobol, for a path tracer whose dimensions come in
- * pairs: pair `pair` of sample k (of n) of the pixel `pixel` is the 2D Sobol
- * point (dimensions 0 and 1) of index mc_permutation_element(k, n, ...),
- * Owen scrambled, with permutation and scramble keys hashed from (seed,
- * pixel, pair). Every pair is a stratified (0,2)-sequence on its own (for
- * n a power of 2 the n samples of a pixel form a (0,m,2)-net in every
- * pair); pairs are decorrelated by their independent permutations. The
- * keys never coincide with those of mc_qmc_key(seed, pixel, dim), so a
- * cursor of stream `pixel` can supply further dimensions. 1 <= n,
- * 0 <= k < n. */
-void mc_sobol_padded2(uint64_t seed, uint64_t pixel, uint32_t pair, uint32_t k, uint32_t n,
-                      double u[2]);
+/* Padded Owen-scrambled Sobol, for a path tracer that asks for its
+ * dimensions one or two at a time (pbrt-v4's PaddedSobolSampler). `base`
+ * names the pixel's sequence: mc_qmc_stream_seed(seed, pixel), hashed once
+ * per pixel by the caller. The request at dimension `dim` of sample k (of
+ * n) is Sobol point perm(k), where the index permutation perm
+ * (mc_permutation_element) and the Owen scrambles are keyed by hashes of
+ * (base, dim): a 1D request is its dimension 0, a 2D request its
+ * dimensions 0 and 1. Every request is a stratified (0,2)-sequence on its
+ * own (for n a power of 2 the n samples of a pixel form a (0,m,2)-net);
+ * requests are decorrelated by their independent permutations. A caller
+ * hands each dimension out once per sample: a 1D request takes one, a 2D
+ * request two (dim and dim + 1), so no two requests share a key.
+ * 1 <= n, 0 <= k < n. */
+double mc_sobol_padded1(uint64_t base, uint32_t dim, uint32_t k, uint32_t n);
+void mc_sobol_padded2(uint64_t base, uint32_t dim, uint32_t k, uint32_t n, double u[2]);
 
 /* Where the dimensions of a sample come from. */
 typedef enum mc_qmc_method {

@@ -15,9 +15,9 @@
  *                          the first two dimensions of Sobol point
  *                          perm(k), with the index permutation perm and the
  *                          Owen scrambles keyed by a hash of (seed, p,
- *                          dimension) (mc_sobol_padded2's construction,
- *                          with the pixel's part of the hash computed once
- *                          per pixel). Each request is a stratified set
+ *                          dimension) (mc_sobol_padded1 and
+ *                          mc_sobol_padded2, the pixel's part of the hash
+ *                          computed once per pixel). Each request is a stratified set
  *                          over the pixel's samples; requests differ in
  *                          their permutations and scrambles, which makes
  *                          them independent of one another, so the

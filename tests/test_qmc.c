@@ -541,7 +541,7 @@ static void test_qmc_padded_pairs(void **state)
             for (uint32_t pair = 0; pair < 6u; pair++) {
                 for (uint32_t k = 0; k < n; k++) {
                     double u[2];
-                    mc_sobol_padded2(seed, pixel * 7919u, pair, k, n, u);
+                    mc_sobol_padded2(mc_qmc_stream_seed(seed, pixel * 7919u), 2u * pair, k, n, u);
                     assert_true(u[0] >= 0.0 && u[0] < 1.0 && u[1] >= 0.0 && u[1] < 1.0);
                     x[k] = (uint32_t)(u[0] * 0x1p32);
                     y[k] = (uint32_t)(u[1] * 0x1p32);
@@ -556,8 +556,8 @@ static void test_qmc_padded_pairs(void **state)
     int differ = 0;
     for (uint32_t k = 0; k < 64u; k++) {
         double a[2], b[2];
-        mc_sobol_padded2(seed, 3u, 0u, k, 64u, a);
-        mc_sobol_padded2(seed, 3u, 1u, k, 64u, b);
+        mc_sobol_padded2(mc_qmc_stream_seed(seed, 3u), 0u, k, 64u, a);
+        mc_sobol_padded2(mc_qmc_stream_seed(seed, 3u), 2u, k, 64u, b);
         differ += (int)(a[0] * 64.0) != (int)(b[0] * 64.0);
     }
     assert_seeded(differ > 0, seed);
