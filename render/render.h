@@ -83,4 +83,12 @@ rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera);
  * stats->paths samples), -1 on bad arguments or out of memory. */
 int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats);
 
+/* rt_render restricted to the rows first, first + step, ... of the image
+ * (0 <= first < height, step >= 1), the others left without samples. A
+ * pixel's samples and stream do not depend on which rows are rendered
+ * with it, so each of its pixels is the one rt_render makes, bit for bit:
+ * P processes taking first = 0 .. P-1 with step P render disjoint rows of
+ * the same image. Progress and stats count these rows only. */
+int rt_render_rows(const rt_render_job *job, rt_image *img, int first, int step, rt_render_stats *stats);
+
 #endif /* RT_RENDER_H */

@@ -1,0 +1,164 @@
+/* examples/common/mpi_split.c - the MPI side of examples/common/mpi_split.h,
+ * compiled only by `make MPI=1` (with mpicc). */
+#define _POSIX_C_SOURCE 200809L
+
+#include "examples/common/mpi_split.h"
+
+#include <fcntl.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <mpi.h>
+
+enum { TAG_STOP = 1, TAG_ROW = 2 };
+
+/* Open MPI's mpirun, PMIx launchers and MPICH's Hydra (PMI) each leave
+ * their mark in the environment of the processes they start. */
+static bool launched(void)
+{
+    static const char *const marks[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"};
+    for (size_t i = 0; i < sizeof marks / sizeof marks[0]; i++)
+        if (getenv(marks[i]))
+            return true;
+    return false;
+}
+
+app_mpi app_mpi_start(int *argc, char ***argv)
+{
+    app_mpi m = {0, 1, false, false, 0, 0, NULL, -1};
+    if (!launched())
+        return m;
+    /* SERIALIZED: the renderer's threads call app_mpi_poll_stop, one at
+     * a time (its progress callback runs in a critical section). */
+    int provided = 0;
+    MPI_Init_thread(argc, argv, MPI_THREAD_SERIALIZED, &provided);
+    m.active = true;
+    MPI_Comm_rank(MPI_COMM_WORLD, &m.rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &m.size);
+    if (provided < MPI_THREAD_SERIALIZED && m.rank == 0)
+        fprintf(stderr, "warning: this MPI gives thread support level %d, not SERIALIZED\n", provided);
+    if (m.rank > 0) {
+        fflush(stdout);
+        fflush(stderr);
+        int null = open("/dev/null", O_WRONLY);
+        m.saved_stderr = dup(STDERR_FILENO);
+        if (null >= 0) {
+            dup2(null, STDOUT_FILENO);
+            dup2(null, STDERR_FILENO);
+            close(null);
+        }
+    }
+    return m;
+}
+
+void app_mpi_setup_done(app_mpi *m)
+{
+    if (m->saved_stderr >= 0) {
+        fflush(stderr);
+        dup2(m->saved_stderr, STDERR_FILENO);
+        close(m->saved_stderr);
+        m->saved_stderr = -1;
+    }
+}
+
+void app_mpi_sum_u64(const app_mpi *m, uint64_t *v, int n)
+{
+    if (m->active)
+        MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+}
+
+double app_mpi_max_double(const app_mpi *m, double x)
+{
+    if (m->active)
+        MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    return x;
+}
+
+void app_mpi_poll_stop(app_mpi *m, atomic_int *stop)
+{
+    if (!m->active || m->size == 1)
+        return;
+    int sig = atomic_load(stop);
+    if (sig != 0 && !m->stop_sent) {
+        MPI_Request *req = malloc((size_t)m->size * sizeof *req);
+        if (!req) /* cannot tell the others: end the whole job */
+            MPI_Abort(MPI_COMM_WORLD, 128 + sig);
+        m->sent_sig = sig; /* the message: one int, the signal number */
+        for (int r = 0; r < m->size; r++)
+            req[r] = MPI_REQUEST_NULL;
+        for (int r = 0; r < m->size; r++)
+            if (r != m->rank)
+                MPI_Isend(&m->sent_sig, 1, MPI_INT, r, TAG_STOP, MPI_COMM_WORLD, &req[r]);
+        m->requests = req;
+        m->stop_sent = true;
+    }
+    for (;;) {
+        int flag = 0, theirs = 0;
+        MPI_Status st;
+        MPI_Iprobe(MPI_ANY_SOURCE, TAG_STOP, MPI_COMM_WORLD, &flag, &st);
+        if (!flag)
+            break;
+        MPI_Recv(&theirs, 1, MPI_INT, st.MPI_SOURCE, TAG_STOP, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        m->stops_seen++;
+        int zero = 0;
+        atomic_compare_exchange_strong(stop, &zero, theirs);
+    }
+}
+
+int app_mpi_settle_stop(app_mpi *m, atomic_int *stop)
+{
+    if (!m->active || m->size == 1)
+        return atomic_load(stop);
+    app_mpi_poll_stop(m, stop);
+    /* Every rank that sent, sent to every other rank: the messages still
+     * to come are the senders' count less this rank's own. */
+    int mine[2] = {m->stop_sent ? 1 : 0, m->stop_sent ? m->sent_sig : atomic_load(stop)}, senders = 0,
+        sig = 0;
+    MPI_Allreduce(&mine[0], &senders, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    MPI_Allreduce(&mine[1], &sig, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    for (int left = senders - mine[0] - m->stops_seen; left > 0; left--) {
+        int theirs = 0;
+        MPI_Recv(&theirs, 1, MPI_INT, MPI_ANY_SOURCE, TAG_STOP, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        m->stops_seen++;
+    }
+    if (m->requests) {
+        MPI_Waitall(m->size, m->requests, MPI_STATUSES_IGNORE);
+        free(m->requests);
+        m->requests = NULL;
+    }
+    return sig;
+}
+
+bool app_mpi_gather_rows(const app_mpi *m, void *rows, size_t row_bytes, int n_rows)
+{
+    if (!m->active || m->size == 1)
+        return true;
+    if (row_bytes > INT_MAX)
+        return false;
+    int count = (int)row_bytes;
+    unsigned char *base = rows;
+    /* Messages between two ranks arrive in the order sent, so rank 0 can
+     * take the rows in image order while each rank sends its own in
+     * the same order. */
+    for (int y = 0; y < n_rows; y++) {
+        int owner = y % m->size;
+        unsigned char *row = base + (size_t)y * row_bytes;
+        int rc = MPI_SUCCESS;
+        if (m->rank == 0 && owner != 0)
+            rc = MPI_Recv(row, count, MPI_BYTE, owner, TAG_ROW, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        else if (m->rank != 0 && owner == m->rank)
+            rc = MPI_Send(row, count, MPI_BYTE, 0, TAG_ROW, MPI_COMM_WORLD);
+        if (rc != MPI_SUCCESS)
+            return false;
+    }
+    return true;
+}
+
+void app_mpi_end(app_mpi *m)
+{
+    if (m->active)
+        MPI_Finalize();
+    m->active = false;
+}
