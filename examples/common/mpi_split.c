@@ -8,6 +8,7 @@
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 #include <mpi.h>
@@ -113,12 +114,20 @@ int app_mpi_settle_stop(app_mpi *m, atomic_int *stop)
         return atomic_load(stop);
     app_mpi_poll_stop(m, stop);
     /* Every rank that sent, sent to every other rank: the messages still
-     * to come are the senders' count less this rank's own. */
-    int mine[2] = {m->stop_sent ? 1 : 0, m->stop_sent ? m->sent_sig : atomic_load(stop)}, senders = 0,
-        sig = 0;
-    MPI_Allreduce(&mine[0], &senders, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
-    MPI_Allreduce(&mine[1], &sig, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    for (int left = senders - mine[0] - m->stops_seen; left > 0; left--) {
+     * to come are the senders' count less this rank's own. One
+     * collective: entry r says whether rank r sent, the last the largest
+     * signal number. */
+    int n = m->size + 1, *said = calloc((size_t)n, sizeof *said);
+    if (!said)
+        MPI_Abort(MPI_COMM_WORLD, 1);
+    said[m->rank] = m->stop_sent;
+    said[m->size] = m->stop_sent ? m->sent_sig : atomic_load(stop);
+    MPI_Allreduce(MPI_IN_PLACE, said, n, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    int senders = 0, sig = said[m->size];
+    for (int r = 0; r < m->size; r++)
+        senders += said[r];
+    free(said);
+    for (int left = senders - (m->stop_sent ? 1 : 0) - m->stops_seen; left > 0; left--) {
         int theirs = 0;
         MPI_Recv(&theirs, 1, MPI_INT, MPI_ANY_SOURCE, TAG_STOP, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         m->stops_seen++;
@@ -131,29 +140,60 @@ int app_mpi_settle_stop(app_mpi *m, atomic_int *stop)
     return sig;
 }
 
+/* Rows per message: whole rows, at most about 1 GB (a message's count is
+ * an int). */
+static int rows_per_message(size_t row_bytes)
+{
+    size_t n = ((size_t)1 << 30) / row_bytes;
+    return n < 1 ? 1 : n > INT_MAX ? INT_MAX : (int)n;
+}
+
+/* Copies rows first, first + step, ... (count of them) between the image
+ * and a packed buffer, in either direction. */
+static void pack(unsigned char *image, unsigned char *packed, size_t row_bytes, int first, int step,
+                 int count, bool to_packed)
+{
+    for (int i = 0; i < count; i++) {
+        unsigned char *row = image + (size_t)(first + i * step) * row_bytes;
+        unsigned char *p = packed + (size_t)i * row_bytes;
+        memcpy(to_packed ? p : row, to_packed ? row : p, row_bytes);
+    }
+}
+
 bool app_mpi_gather_rows(const app_mpi *m, void *rows, size_t row_bytes, int n_rows)
 {
     if (!m->active || m->size == 1)
         return true;
     if (row_bytes > INT_MAX)
         return false;
-    int count = (int)row_bytes;
-    unsigned char *base = rows;
-    /* Messages between two ranks arrive in the order sent, so rank 0 can
-     * take the rows in image order while each rank sends its own in
-     * the same order. */
-    for (int y = 0; y < n_rows; y++) {
-        int owner = y % m->size;
-        unsigned char *row = base + (size_t)y * row_bytes;
-        int rc = MPI_SUCCESS;
-        if (m->rank == 0 && owner != 0)
-            rc = MPI_Recv(row, count, MPI_BYTE, owner, TAG_ROW, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        else if (m->rank != 0 && owner == m->rank)
-            rc = MPI_Send(row, count, MPI_BYTE, 0, TAG_ROW, MPI_COMM_WORLD);
-        if (rc != MPI_SUCCESS)
-            return false;
+    /* Each rank's rows travel packed, a few large messages per rank rather
+     * than one per row: on a loaded or oversubscribed machine every
+     * message waits for the receiver to be scheduled, and a job stopped
+     * by mpirun has about one second left to write its image. */
+    int per = rows_per_message(row_bytes);
+    unsigned char *buf = malloc((size_t)per * row_bytes);
+    if (!buf)
+        return false;
+    bool ok = true;
+    for (int r = 1; r < m->size && ok; r++) {
+        if (m->rank != 0 && m->rank != r)
+            continue;
+        int mine = r < n_rows ? (n_rows - r + m->size - 1) / m->size : 0;
+        for (int i0 = 0; i0 < mine && ok; i0 += per) {
+            int count = mine - i0 < per ? mine - i0 : per, first = r + i0 * m->size;
+            int bytes = (int)((size_t)count * row_bytes), rc;
+            if (m->rank == 0) {
+                rc = MPI_Recv(buf, bytes, MPI_BYTE, r, TAG_ROW, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+                pack(rows, buf, row_bytes, first, m->size, count, false);
+            } else {
+                pack(rows, buf, row_bytes, first, m->size, count, true);
+                rc = MPI_Send(buf, bytes, MPI_BYTE, 0, TAG_ROW, MPI_COMM_WORLD);
+            }
+            ok = rc == MPI_SUCCESS;
+        }
     }
-    return true;
+    free(buf);
+    return ok;
 }
 
 void app_mpi_end(app_mpi *m)
