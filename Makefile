@@ -53,6 +53,7 @@ help:
 	@echo "make clean     remove build/"
 	@echo "V=1            show the full compiler command lines"
 	@echo "MPI=1          build with Open MPI into build/mpi/ (README, \"Beyond one machine\")"
+	@echo "make test-mpi  the programs under mpirun give the bytes of one process"
 
 deps:
 	@sh tools/deps.sh $(DEB_PACKAGES)

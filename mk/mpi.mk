@@ -7,8 +7,14 @@
 # renderer is not profile-guided there by default (PGO=auto means 0): the
 # training would run the MPI program outside mpirun. `make deps` installs
 # Debian's Open MPI only when MPI=1.
+#
+# make test-mpi: the MPI programs under mpirun against the plain ones
+# (tests/mpi/run.sh); it builds both, the plain ones in their usual
+# directory with the PGO setting they would have had.
 
 MPI ?= 0
+MPI_REF := $(B)
+MPI_BASE_PGO := $(PGO)
 ifeq ($(MPI),1)
 CC := mpicc
 B := build/mpi$(if $(variant),-$(variant))
@@ -20,4 +26,20 @@ APP_SRCS_OFF := examples/common/mpi_split_none.c
 else
 MPI_PACKAGES :=
 APP_SRCS_OFF := examples/common/mpi_split.c
+endif
+
+# The targets below come first in the Makefile's reading order; `make`
+# alone still builds `all`.
+.DEFAULT_GOAL := all
+
+.PHONY: test-mpi _test-mpi
+ifeq ($(MPI),1)
+test-mpi: deps
+	@$(MAKE) --no-print-directory _test-mpi
+_test-mpi: all
+	@$(MAKE) --no-print-directory MPI=0 PGO=$(MPI_BASE_PGO) $(MPI_REF)/bin/pi $(MPI_REF)/bin/cornell_box
+	@MC_BUILD=$(B) MC_REF=$(MPI_REF) bash tests/mpi/run.sh
+else
+test-mpi:
+	@$(MAKE) --no-print-directory MPI=1 test-mpi
 endif
