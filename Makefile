@@ -85,11 +85,11 @@ _run: all
 	@MC_BUILD=$(B) bash tools/run_table.sh
 
 _bench: all
-	@MC_BUILD=$(B) bash tools/run_bench.sh
+	@MC_BUILD=$(B) MC_MPI=$(MPI) bash tools/run_bench.sh
 
 SEEDS ?= 20
 _soak: all $(TESTS)
-	@MC_BUILD=$(B) bash tools/soak.sh $(SEEDS) $(TESTS)
+	@MC_BUILD=$(B) MC_MPI=$(MPI) bash tools/soak.sh $(SEEDS) $(TESTS)
 
 _plots: all
 	@$(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) V=$(V) figures
