@@ -43,3 +43,16 @@ else
 test-mpi:
 	@$(MAKE) --no-print-directory MPI=1 test-mpi
 endif
+
+# Measuring programs of docs/scaling.md (tests/mpi/*.c, not tests): the
+# rate rank 0 hands out units and receives rows, and the cost of each row.
+ifeq ($(MPI),1)
+MPI_TOOLS := $(patsubst tests/mpi/%.c,$(B)/tests-mpi/%,$(wildcard tests/mpi/*.c))
+$(B)/tests-mpi/%: $(B)/obj/tests/mpi/%.o $(APP_LIB) $(LIBFILES)
+	@mkdir -p $(@D)
+	$(quiet) "  LD      $@"
+	$(Q)$(CC) $(ALL_LDFLAGS) $< $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
+endif
+ifeq ($(MPI),1)
+_bench: $(MPI_TOOLS)
+endif
