@@ -13,8 +13,8 @@
 # - An output path that cannot be written (its directory is a file): exit
 #   non-zero within 10 s, one line on stderr, no file of any name left.
 #   A bad option: exit 2, one line.
-# - SIGINT to mpirun during a render: a complete PNG is written and stderr
-#   says how many samples it holds.
+# - SIGINT to mpirun during a render, or SIGTERM to one rank: a complete
+#   PNG is written and stderr says how many samples it holds.
 # Ends with the line "N passed, N failed" that .ci/run totals.
 set -u
 build=${MC_BUILD:-build/mpi}
@@ -106,6 +106,27 @@ n=$(sed -n 's/.* holds \([0-9]*\) samples.*/\1/p' "$tmp/err")
 [ $rc != 0 ] && [ "$head" = 89504e470d0a1a0a ] && [ "${n:-0}" -gt 0 ] &&
     [ "$(ls -A "$tmp/out")" = int.png ]
 check "SIGINT to mpirun, 2 ranks: partial PNG written with its sample count" $? \
+    "exit $rc, header '$head', stderr: $(head -3 "$tmp/err")"
+
+# SIGTERM to one rank only (the newest process, not mpirun): it tells the
+# others, every rank stops and rank 0 writes; no time limit applies, as
+# mpirun is not stopping the job. Exit 128 + 15.
+for delay in 2 4 8; do
+    rm -f "$tmp/out/int.png"
+    "${mpirun[@]}" -np 3 "$build/bin/cornell_box" --width 64 --spp 1e6 --threads 1 \
+        -o "$tmp/out/int.png" >"$tmp/out.txt" 2>"$tmp/err" &
+    pid=$!
+    sleep "$delay"
+    rank=$(pgrep -n -P "$pid" -f cornell_box)
+    [ -n "$rank" ] && kill -TERM "$rank"
+    wait $pid
+    rc=$?
+    grep -q samples "$tmp/err" && break
+done
+head=$(head -c 8 "$tmp/out/int.png" 2>/dev/null | od -An -tx1 | tr -d ' \n')
+n=$(sed -n 's/.* holds \([0-9]*\) samples.*/\1/p' "$tmp/err")
+[ $rc = 143 ] && [ "$head" = 89504e470d0a1a0a ] && [ "${n:-0}" -gt 0 ] && [ "$(ls -A "$tmp/out")" = int.png ]
+check "SIGTERM to one of 3 ranks: all stop, partial PNG with its sample count, exit 143" $? \
     "exit $rc, header '$head', stderr: $(head -3 "$tmp/err")"
 
 echo "$passed passed, $failed failed"
