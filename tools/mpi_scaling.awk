@@ -46,7 +46,7 @@ END {
         t2 = profile(2160); b2 = t2 / k / busiest(2160, k)
         printf "%-6d %14.4f %14.4f\n", k, b6, b2
     }
-    printf "\nlargest K with efficiency > 90%% (rate %.3g paths/s per rank, rank 0 receives %.3g GB/s, start %.2f s):\n",
+    printf "\nlargest K up to which the efficiency stays > 90%% (rate %.3g paths/s per rank, rank 0 receives %.3g GB/s, start %.2f s):\n",
         rate, gbs, start
     printf "%-16s %8s %8s %8s\n", "image", "100 spp", "1000 spp", "10000 spp"
     split("600x600 3840x2160", imgs, " ")
@@ -56,9 +56,12 @@ END {
         split("100 1000 10000", spps, " ")
         for (s = 1; s <= 3; s++) {
             best = 1
-            for (k = 1; k <= wh[2]; k = (k < 8 ? k + 1 : int(k * 1.1) + 1))
-                if (efficiency(wh[2], wh[1], spps[s], k) > 0.9)
-                    best = k
+            # "Stays above": the last K before the first that falls below.
+            for (k = 1; k <= wh[2]; k++) {
+                if (efficiency(wh[2], wh[1], spps[s], k) <= 0.9)
+                    break
+                best = k
+            }
             printf " %8d", best
         }
         printf "\n"
