@@ -188,7 +188,9 @@ int main(int argc, char **argv)
      * samples), a line saying so, exit status 130. sigaction rather than
      * signal(): under _POSIX_C_SOURCE, signal() may reset the handler after
      * one delivery, and a second Ctrl-C would then kill us mid-write.
-     * SA_RESTART keeps a write(2) in progress from failing with EINTR. */
+     * SA_RESTART keeps a write(2) in progress from failing with EINTR.
+     * (Under mpirun, MPI starts just before: handlers it may install are
+     * then replaced by ours for these three signals.) */
     app_mpi mpi = app_mpi_start(&argc, &argv);
     struct sigaction sa = {0};
     sa.sa_handler = on_stop_signal;

@@ -103,8 +103,8 @@ int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
 int rt_render_rows(const rt_render_job *job, rt_image *img, int first, int step, rt_render_stats *stats)
 {
     if (!job->scene || job->spp < 1 || job->camera.width != img->width ||
-        job->camera.height != img->height || job->path.max_depth < 0 || step < 1 || first < 0 ||
-        first >= img->height)
+        job->camera.height != img->height || job->path.max_depth < 0 || step < 1 ||
+        step > img->height || first < 0 || first >= img->height)
         return -1;
     /* BEGIN SNIPPET render_streams */
     size_t npix = (size_t)img->width * (size_t)img->height;

@@ -84,7 +84,7 @@ rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera);
 int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats);
 
 /* rt_render restricted to the rows first, first + step, ... of the image
- * (0 <= first < height, step >= 1), the others left without samples. A
+ * (0 <= first < height, 1 <= step <= height), the others left without samples. A
  * pixel's samples and stream do not depend on which rows are rendered
  * with it, so each of its pixels is the one rt_render makes, bit for bit:
  * P processes taking first = 0 .. P-1 with step P render disjoint rows of
