@@ -38,8 +38,12 @@ app_mpi app_mpi_start(int *argc, char ***argv)
     m.active = true;
     MPI_Comm_rank(MPI_COMM_WORLD, &m.rank);
     MPI_Comm_size(MPI_COMM_WORLD, &m.size);
-    if (provided < MPI_THREAD_SERIALIZED && m.rank == 0)
-        fprintf(stderr, "warning: this MPI gives thread support level %d, not SERIALIZED\n", provided);
+    if (provided < MPI_THREAD_SERIALIZED && m.rank == 0) {
+        const char *prog = *argc > 0 ? strrchr((*argv)[0], '/') : NULL;
+        prog = prog ? prog + 1 : *argc > 0 ? (*argv)[0] : "mpi";
+        fprintf(stderr, "%s: warning: MPI gives thread level %d, below MPI_THREAD_SERIALIZED\n", prog,
+                provided);
+    }
     if (m.rank > 0) {
         fflush(stdout);
         fflush(stderr);
