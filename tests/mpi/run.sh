@@ -23,8 +23,10 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # CI runs as root in a container: Open MPI refuses root without these; in a
 # container, its shared-memory transport may not use cross-memory attach.
+# One machine: shared memory only (ob1 over self and vader), so that no
+# network or InfiniBand component is probed and warns.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_btl_vader_single_copy_mechanism=none
+export OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_pml=ob1 OMPI_MCA_btl=self,vader
 # -q: no banners of mpirun's own; --oversubscribe: 3 ranks on 2 cores;
 # --bind-to none: a rank's OpenMP threads are not all pinned to one core.
 mpirun=(mpirun -q --oversubscribe --bind-to none)
