@@ -16,7 +16,9 @@ MPI ?= 0
 MPI_REF := $(B)
 MPI_BASE_PGO := $(PGO)
 ifeq ($(MPI),1)
-CC := mpicc
+# mpicc runs the compiler mk/flags.mk chose (CC=clang: build/mpi-clang/).
+export OMPI_CC := $(CC)
+override CC := mpicc
 B := build/mpi$(if $(variant),-$(variant))
 ifeq ($(PGO),auto)
 PGO := 0
