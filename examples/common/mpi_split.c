@@ -186,7 +186,9 @@ bool app_mpi_gather_rows(const app_mpi *m, void *rows, size_t row_bytes, int n_r
      * than one per row: on a loaded or oversubscribed machine every
      * message waits for the receiver to be scheduled, and a job stopped
      * by mpirun has about one second left to write its image. */
-    int per = rows_per_message(row_bytes);
+    int per = rows_per_message(row_bytes), most = (n_rows + m->size - 1) / m->size;
+    if (per > most) /* the buffer holds no more rows than any rank has */
+        per = most > 0 ? most : 1;
     unsigned char *buf = malloc((size_t)per * row_bytes);
     if (!buf)
         return false;
