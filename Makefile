@@ -10,6 +10,7 @@
 .DELETE_ON_ERROR:
 
 include mk/flags.mk
+include mk/mpi.mk
 
 # Debian packages the project needs (see `make deps`).
 # fonts-texgyre-math: the book ships its math font (TeX Gyre Pagella Math),
@@ -26,7 +27,7 @@ lib_srcs = $(wildcard $(1)/*.c $(1)/fast/*.c)
 lib_objs = $(patsubst %.c,$(B)/obj/%.o,$(call lib_srcs,$(1)))
 LIBFILES := $(foreach l,$(LAYERS),$(B)/lib/lib$(l).a)
 
-APP_SRCS := $(wildcard examples/common/*.c)
+APP_SRCS := $(filter-out $(APP_SRCS_OFF),$(wildcard examples/common/*.c))
 APP_LIB := $(B)/lib/libapp.a
 PROGRAMS := $(patsubst examples/%.c,$(B)/bin/%,$(wildcard examples/*.c))
 BENCHES := $(patsubst bench/%.c,$(B)/bench/%,$(wildcard bench/*.c))
@@ -51,9 +52,14 @@ help:
 	@echo "make deps      install the Debian packages the project needs, when missing"
 	@echo "make clean     remove build/"
 	@echo "V=1            show the full compiler command lines"
+	@echo "MPI=1          build with Open MPI into build/mpi/ (README, \"Beyond one machine\")"
+	@echo "make test-mpi  the programs under mpirun give the bytes of one process"
 
 deps:
 	@sh tools/deps.sh $(DEB_PACKAGES)
+ifneq ($(MPI_PACKAGES),)
+	@sh tools/deps.sh --always $(MPI_PACKAGES)
+endif
 
 # What only the book's checks need: a real browser, python3 to drive it
 # (over Chromium's DevTools pipe, no extra module), epubcheck.
@@ -79,11 +85,11 @@ _run: all
 	@MC_BUILD=$(B) bash tools/run_table.sh
 
 _bench: all
-	@MC_BUILD=$(B) bash tools/run_bench.sh
+	@MC_BUILD=$(B) MC_MPI=$(MPI) bash tools/run_bench.sh
 
 SEEDS ?= 20
 _soak: all $(TESTS)
-	@MC_BUILD=$(B) bash tools/soak.sh $(SEEDS) $(TESTS)
+	@MC_BUILD=$(B) MC_MPI=$(MPI) bash tools/soak.sh $(SEEDS) $(TESTS)
 
 _plots: all
 	@$(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) V=$(V) figures

@@ -16,6 +16,14 @@
  * goes to a temporary file beside the target, renamed over it only when
  * complete: whatever stops the program, the target holds either the
  * previous image or a complete new one.
+ *
+ * Over MPI (make MPI=1; examples/common/mpi_split.h):
+ *   mpirun -q -np 4 build/mpi/bin/cornell_box --spp 1000 -o cornell.png
+ * Rank r of K renders the rows r, r + K, ...; each pixel's samples are
+ * taken by one rank in sample order, so the image rank 0 gathers and
+ * writes is the one-process image, bit for bit, for any K and threads. A
+ * stop signal to any rank (mpirun turns Ctrl-C into SIGTERM) stops every
+ * rank and the image so far is written, as above.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -24,11 +32,13 @@
 #include <omp.h>
 #include <signal.h>
 #include <stdatomic.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/mpi_split.h"
 #include "examples/common/outfile.h"
 #include "render/render.h"
 #include "render/scenes.h"
@@ -157,6 +167,37 @@ static void show_progress(void *ctx, const rt_progress *p)
     fflush(stderr);
 }
 
+/* The renderer's per-row callback: shares stop signals between the ranks
+ * of an MPI run, and draws the progress line on a terminal. */
+typedef struct row_watch {
+    double clock[2];
+    app_mpi *mpi;
+    bool tty;
+} row_watch;
+
+static void on_row(void *ctx, const rt_progress *p)
+{
+    row_watch *w = ctx;
+    app_mpi_poll_stop(w->mpi, &interrupted);
+    if (w->tty)
+        show_progress(w->clock, p);
+}
+
+/* The ranks' counts summed, the rows gathered on rank 0; the returned
+ * signal stopped some rank (0: none). */
+static int combine(app_mpi *mpi, rt_image *img, rt_render_stats *st)
+{
+    int sig = app_mpi_settle_stop(mpi, &interrupted);
+    uint64_t sums[4] = {st->paths, st->segments, st->dropped, st->cancelled};
+    app_mpi_sum_u64(mpi, sums, 4);
+    *st = (rt_render_stats){sums[0], sums[1], sums[2], st->seconds, sums[3] > 0};
+    if (!app_mpi_gather_rows(mpi, img->px, sizeof(rt_pixel) * (size_t)img->width, img->height)) {
+        fprintf(stderr, "%s: rank %d: gathering the image failed\n", prog, mpi->rank);
+        exit(1);
+    }
+    return sig;
+}
+
 static void report(const options *o, const rt_image *img, const rt_render_stats *st)
 {
     mc_estimate rgb[3];
@@ -197,7 +238,10 @@ int main(int argc, char **argv)
      * samples), a line saying so, exit status 130. sigaction rather than
      * signal(): under _POSIX_C_SOURCE, signal() may reset the handler after
      * one delivery, and a second Ctrl-C would then kill us mid-write.
-     * SA_RESTART keeps a write(2) in progress from failing with EINTR. */
+     * SA_RESTART keeps a write(2) in progress from failing with EINTR.
+     * (Under mpirun, MPI starts just before: handlers it may install are
+     * then replaced by ours for these three signals.) */
+    app_mpi mpi = app_mpi_start(&argc, &argv);
     struct sigaction sa = {0};
     sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
@@ -213,9 +257,15 @@ int main(int argc, char **argv)
         app_fail(prog, "-o %s: the extension must be .png, .ppm or .pfm", o.out);
     check_memory(&o);
     rt_image *ref = load_reference(&o);
+    if (mpi.size > o.width)
+        app_fail(prog, "%d ranks are more than the %d image rows", mpi.size, o.width);
+    /* The file is created only once the image is there (a job killed on
+     * the way leaves nothing), but whether it can be is checked now. */
     app_outfile out;
-    if (!app_outfile_open(&out, o.out))
+    if (mpi.rank == 0 && !app_outfile_open(&out, o.out))
         app_fail(prog, "cannot write '%s': %s", o.out, strerror(errno));
+    if (mpi.rank == 0)
+        app_outfile_abort(&out);
     rt_camera_params cp;
     rt_scene *scene = rt_scene_named(o.scene, &cp);
     rt_image *img = rt_image_create(o.width, o.width);
@@ -251,23 +301,35 @@ int main(int argc, char **argv)
                  "%.3g paths on %d thread(s), at about 2 Mpaths/s each; SIGINT or SIGTERM writes "
                  "the image so far",
                  paths, nt);
-        app_announce(prog, paths / (2e6 * nt), what);
+        app_announce(prog, paths / (2e6 * nt * mpi.size), what);
     }
-    job.progress = tty ? show_progress : NULL;
-    job.progress_ctx = clock;
+    app_mpi_setup_done(&mpi);
+    row_watch watch = {{clock[0], 0.0}, &mpi, tty};
+    job.progress = tty || mpi.active ? on_row : NULL;
+    job.progress_ctx = &watch;
     rt_render_stats st;
-    if (rt_render(&job, img, &st) < 0) {
+    if (rt_render_rows(&job, img, mpi.rank, mpi.size, &st) < 0) {
         rt_image_destroy(img);
         rt_image_destroy(ref);
         rt_scene_destroy(scene);
-        app_outfile_abort(&out);
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
     }
+    int sig = combine(&mpi, img, &st);
+    if (mpi.active) /* the whole job's time, the gathering included */
+        st.seconds = omp_get_wtime() - clock[0];
     if (tty)
         fputc('\n', stderr);
+    if (mpi.rank > 0) {
+        rt_image_destroy(img);
+        rt_image_destroy(ref);
+        rt_scene_destroy(scene);
+        app_mpi_end(&mpi);
+        return st.cancelled ? 128 + sig : 0;
+    }
     errno = 0;
-    if (rt_image_write(img, out.f, format, gamma) != 0 || !app_outfile_commit(&out)) {
+    if (!app_outfile_open(&out, o.out) || rt_image_write(img, out.f, format, gamma) != 0 ||
+        !app_outfile_commit(&out)) {
         int e = errno;
         rt_image_destroy(img);
         rt_image_destroy(ref);
@@ -280,7 +342,6 @@ int main(int argc, char **argv)
     report(&o, img, &st);
     if (ref)
         report_error(&o, img, ref, st.seconds);
-    int sig = atomic_load(&interrupted);
     if (st.cancelled)
         fprintf(stderr, "%s: %s: %s holds %llu samples (%.2f per pixel of the %llu asked)\n",
                 prog, sig == SIGTERM ? "terminated" : sig == SIGHUP ? "hung up" : "interrupted", o.out,
@@ -289,5 +350,6 @@ int main(int argc, char **argv)
     rt_image_destroy(img);
     rt_image_destroy(ref);
     rt_scene_destroy(scene);
+    app_mpi_end(&mpi);
     return st.cancelled ? 128 + sig : 0;
 }

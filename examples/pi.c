@@ -9,11 +9,16 @@
  *
  * Build and run:  make all && build/bin/pi --method all
  *                 build/bin/pi --method stratified --samples 1e9 --threads 2
+ * Over MPI:       make MPI=1 && mpirun -q -np 4 build/mpi/bin/pi --samples 1e12
+ * (the blocks of samples, or rows of cells, are split over the ranks and
+ * their integer counts summed: the output is the same bytes for any K; the
+ * running method is one stream and runs on rank 0).
  */
 #include <math.h>
 #include <string.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/mpi_split.h"
 #include "mc/constants.h"
 #include "mc/pi.h"
 
@@ -43,8 +48,26 @@ static void running(const app_table *t, uint64_t seed, uint64_t n)
 }
 /* END SNIPPET pi_running */
 
+/* This rank's share of the plain and stratified estimators, summed. */
+static mc_estimate plain_split(const app_mpi *mpi, uint64_t seed, uint64_t n, int threads)
+{
+    uint64_t hits = mc_pi_plain_hits_part(seed, n, (uint64_t)mpi->rank, (uint64_t)mpi->size, threads);
+    app_mpi_sum_u64(mpi, &hits, 1);
+    return mc_pi_from_hits(hits, n);
+}
+
+static mc_estimate stratified_split(const app_mpi *mpi, uint64_t seed, uint64_t n, int threads)
+{
+    mc_pi_tally g = mc_pi_stratified_part(seed, n, (uint64_t)mpi->rank, (uint64_t)mpi->size, threads);
+    uint64_t v[3] = {g.hits, g.discord, g.lone};
+    app_mpi_sum_u64(mpi, v, 3);
+    mc_pi_tally all = {v[0], v[1], v[2]};
+    return mc_pi_stratified_finish(seed, n, all, NULL);
+}
+
 int main(int argc, char **argv)
 {
+    app_mpi mpi = app_mpi_start(&argc, &argv);
     uint64_t n = 100000000u, seed = 1u;
     const char *method = "all";
     bool csv = false;
@@ -66,23 +89,25 @@ int main(int argc, char **argv)
                   app_selected(method, "running");
     double total = (double)n_methods * (double)n;
     char what[128];
-    snprintf(what, sizeof what, "%.3g samples on %d thread(s), at about 3e8 per second each", total,
-             app_threads_used(threads));
-    app_announce("pi", total / (3e8 * app_threads_used(threads)), what);
+    snprintf(what, sizeof what, "%.3g samples on %d thread(s)%s, at about 3e8 per second each", total,
+             app_threads_used(threads), mpi.size > 1 ? " in each rank" : "");
+    app_announce("pi", total / (3e8 * app_threads_used(threads) * mpi.size), what);
+    app_mpi_setup_done(&mpi);
     app_table t = {stdout, csv, extra_cols, 1, "pi"};
     app_table_begin(&t);
     bool all = strcmp(method, "all") == 0;
     mc_estimate plain = {0, 0.0, 0.0, 0.0}, strat = plain;
     if (app_selected(method, "plain"))
-        row(&t, "plain", plain = mc_pi_plain(seed, n, threads, NULL));
+        row(&t, "plain", plain = plain_split(&mpi, seed, n, threads));
     if (app_selected(method, "stratified"))
-        row(&t, "stratified", strat = mc_pi_stratified(seed, n, threads, NULL));
-    if (app_selected(method, "running"))
+        row(&t, "stratified", strat = stratified_split(&mpi, seed, n, threads));
+    if (app_selected(method, "running") && mpi.rank == 0)
         running(&t, seed, n);
     if (all && !csv && n >= 2 && strat.std_error > 0.0)
         printf("\nplain vs stratified at n = %llu: standard error %.2e vs %.2e (%.0fx; the\n"
                "stratified bar is about 1.5x conservative), actual error %.2e vs %.2e\n",
                (unsigned long long)n, plain.std_error, strat.std_error,
                plain.std_error / strat.std_error, fabs(plain.value - MC_PI), fabs(strat.value - MC_PI));
+    app_mpi_end(&mpi);
     return 0;
 }

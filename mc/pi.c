@@ -138,14 +138,22 @@ static int thread_count(int threads)
     return threads > 0 ? threads : omp_get_max_threads();
 }
 
-mc_estimate mc_pi_plain(uint64_t seed, uint64_t n, int threads, uint64_t *hits_out)
+uint64_t mc_pi_plain_hits_part(uint64_t seed, uint64_t n, uint64_t part, uint64_t parts, int threads)
 {
     uint64_t blocks = (n + MC_PI_BLOCK - 1) / MC_PI_BLOCK, hits = 0;
+    uint64_t mine = part < blocks ? (blocks - part + parts - 1) / parts : 0;
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : hits) num_threads(thread_count(threads))
-    for (uint64_t b = 0; b < blocks; b++) {
+    for (uint64_t i = 0; i < mine; i++) {
+        uint64_t b = part + i * parts;
         uint64_t count = b + 1 < blocks ? MC_PI_BLOCK : n - b * MC_PI_BLOCK;
         hits += plain_block(seed, b, count);
     }
+    return hits;
+}
+
+mc_estimate mc_pi_plain(uint64_t seed, uint64_t n, int threads, uint64_t *hits_out)
+{
+    uint64_t hits = mc_pi_plain_hits_part(seed, n, 0, 1, threads);
     if (hits_out)
         *hits_out = hits;
     return mc_pi_from_hits(hits, n);
@@ -234,16 +242,17 @@ static tally last_row(const grid *g, uint64_t j, mc_rng *rng, int *lone)
     return t;
 }
 
-mc_estimate mc_pi_stratified(uint64_t seed, uint64_t n, int threads, uint64_t *hits_out)
+mc_pi_tally mc_pi_stratified_part(uint64_t seed, uint64_t n, uint64_t part, uint64_t parts, int threads)
 {
     size_t sx, sy;
     mc_strat_grid((size_t)n, &sx, &sy);
     grid g = {sx, sy, 1.0 / (double)sx, 1.0 / (double)sy};
     uint64_t pairs = sy / 2, hits = 0, discord = 0;
+    uint64_t mine = part < pairs ? (pairs - part + parts - 1) / parts : 0;
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : hits, discord) \
     num_threads(thread_count(threads))
-    for (uint64_t m = 0; m < pairs; m++) {
-        uint64_t state[LANES], inc[LANES];
+    for (uint64_t i = 0; i < mine; i++) {
+        uint64_t m = part + i * parts, state[LANES], inc[LANES];
         for (int l = 0; l < LANES; l++) {
             mc_rng r = mc_rng_derive(seed, STRAT_ROWS + m * LANES + (uint64_t)l);
             state[l] = r.state;
@@ -253,13 +262,28 @@ mc_estimate mc_pi_stratified(uint64_t seed, uint64_t n, int threads, uint64_t *h
         hits += t.hits;
         discord += t.discord;
     }
-    int lone = 0;
-    if (sy % 2 == 1) {
+    mc_pi_tally out = {hits, discord, 0};
+    if (sy % 2 == 1 && part == 0) {
         mc_rng r = mc_rng_derive(seed, STRAT_LAST_ROW);
+        int lone = 0;
         tally t = last_row(&g, sy - 1, &r, &lone);
-        hits += t.hits;
-        discord += t.discord;
+        out.hits += t.hits;
+        out.discord += t.discord;
+        out.lone = (uint64_t)lone;
     }
+    return out;
+}
+
+mc_estimate mc_pi_stratified(uint64_t seed, uint64_t n, int threads, uint64_t *hits_out)
+{
+    return mc_pi_stratified_finish(seed, n, mc_pi_stratified_part(seed, n, 0, 1, threads), hits_out);
+}
+
+mc_estimate mc_pi_stratified_finish(uint64_t seed, uint64_t n, mc_pi_tally grid_tally, uint64_t *hits_out)
+{
+    size_t sx, sy;
+    mc_strat_grid((size_t)n, &sx, &sy);
+    uint64_t hits = grid_tally.hits, discord = grid_tally.discord, lone = grid_tally.lone;
     /* BEGIN SNIPPET pi_stratified_error */
     /* The extra points: plain uniform, with their own sample variance. */
     uint64_t extra = n - (uint64_t)sx * sy, extra_hits = 0;
@@ -270,7 +294,7 @@ mc_estimate mc_pi_stratified(uint64_t seed, uint64_t n, int threads, uint64_t *h
     }
     double extra_var = extra >= 2 ? mc_pi_from_hits(extra_hits, extra).variance : 4.0;
     double nd = (double)n;
-    double sum_var = 16.0 * (double)discord + 4.0 * lone + (double)extra * extra_var;
+    double sum_var = 16.0 * (double)discord + 4.0 * (double)lone + (double)extra * extra_var;
     hits += extra_hits;
     if (hits_out)
         *hits_out = hits;

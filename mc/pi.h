@@ -81,4 +81,29 @@ mc_estimate mc_pi_plain(uint64_t seed, uint64_t n, int threads, uint64_t *hits);
  * thread-independence as mc_pi_plain. */
 mc_estimate mc_pi_stratified(uint64_t seed, uint64_t n, int threads, uint64_t *hits);
 
+/* --- a run split into parts (several processes, e.g. under MPI) ----------
+ * Part p of P (0 <= p < P) takes the blocks, or row pairs, whose index is
+ * p modulo P. Its result is an integer tally, and integer sums do not
+ * depend on their order: the parts' tallies summed give exactly the counts
+ * of the one-call functions above, for any P and any thread count. */
+
+/* The hits of the blocks b = part, part + parts, ... of mc_pi_plain(seed,
+ * n, ...); parts >= 1. */
+uint64_t mc_pi_plain_hits_part(uint64_t seed, uint64_t n, uint64_t part, uint64_t parts, int threads);
+
+/* The integer tallies of the jittered grid of mc_pi_stratified. */
+typedef struct mc_pi_tally {
+    uint64_t hits;    /* grid points inside the quarter disc */
+    uint64_t discord; /* cell pairs whose two points disagree */
+    uint64_t lone;    /* 1 when a cell has no partner (sx and sy odd) */
+} mc_pi_tally;
+
+/* The tallies of row pairs m = part, part + parts, ... of the grid of
+ * mc_pi_stratified(seed, n, ...); part 0 also takes the odd last row. */
+mc_pi_tally mc_pi_stratified_part(uint64_t seed, uint64_t n, uint64_t part, uint64_t parts, int threads);
+
+/* mc_pi_stratified from the summed tallies of all parts: draws the
+ * n - sx sy extra points and forms the estimate and its error bar. */
+mc_estimate mc_pi_stratified_finish(uint64_t seed, uint64_t n, mc_pi_tally grid_tally, uint64_t *hits);
+
 #endif /* MC_PI_H */

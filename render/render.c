@@ -47,19 +47,21 @@ typedef struct totals {
     int cancelled;
 } totals;
 
-/* One pass: samples [k0, k1) of every pixel, rows handed out in order. */
+/* One pass: samples [k0, k1) of every pixel of rows first, first + step,
+ * ..., rows handed out in order. */
 static void render_pass(const rt_render_job *job, rt_image *img, mc_rng *streams, const rt_jitter *jt,
-                        uint64_t k0, uint64_t k1, totals *tot)
+                        uint64_t k0, uint64_t k1, int first, int step, totals *tot)
 {
     rt_cell c0 = rt_jitter_cell(jt, k0);
-    int next_row = 0, nt = job->threads > 0 ? job->threads : omp_get_max_threads();
-    uint64_t total = job->spp * (uint64_t)img->width * (uint64_t)img->height;
+    int next_row = first, nt = job->threads > 0 ? job->threads : omp_get_max_threads();
+    uint64_t rows = (uint64_t)((img->height - first + step - 1) / step);
+    uint64_t total = job->spp * (uint64_t)img->width * rows;
     /* BEGIN SNIPPET render_pass_rows */
 #pragma omp parallel num_threads(nt)
     for (;;) {
         int y;
 #pragma omp atomic capture
-        y = next_row++;
+        { y = next_row; next_row += step; }
         if (y >= img->height)
             break;
         if (job->cancel && atomic_load(job->cancel)) {
@@ -102,9 +104,15 @@ rt_sampler rt_render_sampler(const rt_render_job *job, mc_rng rng, uint64_t pixe
 
 int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
 {
+    return rt_render_rows(job, img, 0, 1, stats);
+}
+
+int rt_render_rows(const rt_render_job *job, rt_image *img, int first, int step, rt_render_stats *stats)
+{
     if (!job->scene || job->spp < 1 || job->camera.width != img->width ||
         job->camera.height != img->height || job->path.max_depth < 0 ||
-        (job->sampler == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX))
+        (job->sampler == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX) || step < 1 ||
+        step > img->height || first < 0 || first >= img->height)
         return -1;
     /* BEGIN SNIPPET render_streams */
     size_t npix = (size_t)img->width * (size_t)img->height;
@@ -124,7 +132,7 @@ int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
     /* Pass p takes base samples, one more for the first `extra` passes. */
     for (uint64_t p = 0, k0 = 0; p < passes && !tot.cancelled; p++) {
         uint64_t k1 = k0 + base + (p < extra ? 1 : 0);
-        render_pass(job, img, streams, &jt, k0, k1, &tot);
+        render_pass(job, img, streams, &jt, k0, k1, first, step, &tot);
         k0 = k1;
     }
     /* END SNIPPET render_streams */

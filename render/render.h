@@ -99,4 +99,12 @@ int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats);
  * (for the row loops). */
 rt_sampler rt_render_sampler(const rt_render_job *job, mc_rng rng, uint64_t pixel);
 
+/* rt_render restricted to the rows first, first + step, ... of the image
+ * (0 <= first < height, 1 <= step <= height), the others left without samples. A
+ * pixel's samples and stream do not depend on which rows are rendered
+ * with it, so each of its pixels is the one rt_render makes, bit for bit:
+ * P processes taking first = 0 .. P-1 with step P render disjoint rows of
+ * the same image. Progress and stats count these rows only. */
+int rt_render_rows(const rt_render_job *job, rt_image *img, int first, int step, rt_render_stats *stats);
+
 #endif /* RT_RENDER_H */
