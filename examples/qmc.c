@@ -15,9 +15,11 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/mpi_split.h"
 #include "mc/qmc.h"
 #include "mc/testfn.h"
 
@@ -67,12 +69,16 @@ static void point(int m, uint64_t seed, uint64_t r, uint64_t i, unsigned d, uint
 /* The mean of f over n points of each of R replicates; the estimate is the
  * mean of the R replicate means, its standard error their spread / sqrt(R).
  * Sums are compensated (Neumaier): at 2^30 points the rounding of a plain
- * sum would be near the error of the best point sets. */
-static mc_estimate estimate(const mc_testfn *f, int m, uint64_t seed, uint64_t n, uint64_t reps, uint64_t k)
+ * sum would be near the error of the best point sets. Under mpirun, rank
+ * r of K computes the replicates r, r + K, ...; rank 0 gathers the means
+ * and adds them in replicate order, so the result does not depend on K. */
+static mc_estimate estimate(const app_mpi *mpi, const mc_testfn *f, int m, uint64_t seed,
+                            uint64_t n, uint64_t reps, uint64_t k)
 {
-    double x[MC_TESTFN_MAX_DIM];
-    mc_welford w = mc_welford_init();
-    for (uint64_t r = 0; r < reps; r++) {
+    double x[MC_TESTFN_MAX_DIM], *means = calloc(reps, sizeof *means);
+    if (!means)
+        app_fail("qmc", "out of memory for %llu replicates", (unsigned long long)reps);
+    for (uint64_t r = (uint64_t)mpi->rank; r < reps; r += (uint64_t)mpi->size) {
         mc_rng rng = mc_rng_derive(seed, r);
         double s = 0.0, comp = 0.0;
         for (uint64_t i = 0; i < n; i++) {
@@ -81,8 +87,14 @@ static mc_estimate estimate(const mc_testfn *f, int m, uint64_t seed, uint64_t n
             comp += fabs(s) >= fabs(v) ? (s - t) + v : (v - t) + s;
             s = t;
         }
-        mc_welford_add(&w, (s + comp) / (double)n);
+        means[r] = (s + comp) / (double)n;
     }
+    if (!app_mpi_gather_rows(mpi, means, sizeof *means, (int)reps))
+        app_fail("qmc", "gathering the replicates from the other processes failed");
+    mc_welford w = mc_welford_init();
+    for (uint64_t r = 0; r < reps; r++)
+        mc_welford_add(&w, means[r]);
+    free(means);
     mc_estimate e = mc_welford_estimate(&w);
     e.n = n * reps;
     e.variance = e.std_error * e.std_error * (double)e.n; /* per evaluation, as other programs print */
@@ -150,8 +162,12 @@ static int points(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    if (argc > 1 && strcmp(argv[1], "points") == 0)
-        return points(argc - 1, argv + 1);
+    app_mpi mpi = app_mpi_start(&argc, &argv);
+    if (argc > 1 && strcmp(argv[1], "points") == 0) { /* printed once, by rank 0 */
+        int rc = points(argc - 1, argv + 1);
+        app_mpi_end(&mpi);
+        return rc;
+    }
     uint64_t n = 4096, seed = 1;
     const char *integrand = "smooth", *method = "all";
     int dim = 2, reps = 0;
@@ -187,6 +203,7 @@ int main(int argc, char **argv)
             app_fail("qmc", "%s", why);
     /* About 3e-8 s per evaluation and dimension (measured at 1e6, D = 2). */
     app_announce_samples("qmc", n * r, 3e-8 * dim * (strcmp(method, "all") == 0 ? N_METHODS : 1));
+    app_mpi_setup_done(&mpi);
 
     app_table t = {stdout, csv, extra_cols, 3, NULL};
     app_table_begin(&t);
@@ -198,7 +215,7 @@ int main(int argc, char **argv)
         uint64_t k = 0, pts = n, reps_m = m == SOBOL ? 1 : r;
         if (m == JITTER)
             k = jitter_side(n, (unsigned)dim, &pts);
-        mc_estimate e = estimate(&f, m, seed, pts, reps_m, k);
+        mc_estimate e = estimate(&mpi, &f, m, seed, pts, reps_m, k);
         double extra[3] = {(double)pts, (double)reps_m, fabs(e.value - exact)};
         if (m != SOBOL) {
             app_table_row(&t, methods[m], e, exact, extra);
@@ -215,5 +232,6 @@ int main(int argc, char **argv)
         printf("\nsobol: one deterministic point set, so no standard error and no z; abs_error is\n"
                "its actual error. The scrambled methods' errors come from %llu independent replicates.\n",
                (unsigned long long)r);
+    app_mpi_end(&mpi);
     return 0;
 }

@@ -39,7 +39,7 @@ ifeq ($(MPI),1)
 test-mpi: deps
 	@$(MAKE) --no-print-directory _test-mpi
 _test-mpi: all
-	@$(MAKE) --no-print-directory MPI=0 PGO=$(MPI_BASE_PGO) $(MPI_REF)/bin/pi $(MPI_REF)/bin/cornell_box
+	@$(MAKE) --no-print-directory MPI=0 PGO=$(MPI_BASE_PGO) $(MPI_REF)/bin/pi $(MPI_REF)/bin/cornell_box $(MPI_REF)/bin/qmc
 	@MC_BUILD=$(B) MC_REF=$(MPI_REF) bash tests/mpi/run.sh
 else
 test-mpi:

@@ -8,7 +8,9 @@
 #   method, 2e6 points; the stratified method also at 12345 points, whose
 #   grid has an odd last row and extra points) prints the same bytes as
 #   the plain program, and cornell_box (a 24x24 image at 12 spp, as PFM:
-#   the 32-bit floats of every pixel) writes the same file. Negative
+#   the 32-bit floats of every pixel) writes the same file, and qmc (7
+#   scrambles of every method, split over the ranks) prints the same
+#   table. Negative
 #   control: another seed must give other bytes.
 # - An output path that cannot be written (its directory is a file): exit
 #   non-zero within 10 s, one line on stderr, no file of any name left.
@@ -57,6 +59,7 @@ newest_child() {
 "$ref/bin/pi" --samples 2e6 --seed 7 >"$tmp/pi.ref"
 "$ref/bin/pi" --method stratified --samples 12345 --seed 7 >"$tmp/pi_odd.ref"
 "$ref/bin/cornell_box" --width 24 --spp 12 --seed 3 -o "$tmp/box.ref.pfm" >/dev/null
+"$ref/bin/qmc" --integrand peak --dim 3 --samples 1000 --scrambles 7 --seed 5 --csv >"$tmp/qmc.ref"
 for k in 1 2 3; do
     for t in 1 2; do
         OMP_NUM_THREADS=$t "${mpirun[@]}" -np "$k" "$build/bin/pi" --samples 2e6 --seed 7 >"$tmp/pi.out" 2>"$tmp/err"
@@ -72,6 +75,11 @@ for k in 1 2 3; do
         rc=$?
         cmp -s "$tmp/box.ref.pfm" "$tmp/box.pfm" && [ $rc = 0 ]
         check "cornell_box, $k rank(s) x $t thread(s): same image bytes" $? "exit $rc, $(head -2 "$tmp/err")"
+        OMP_NUM_THREADS=$t "${mpirun[@]}" -np "$k" "$build/bin/qmc" --integrand peak --dim 3 --samples 1000 \
+            --scrambles 7 --seed 5 --csv >"$tmp/qmc.out" 2>"$tmp/err"
+        rc=$?
+        cmp -s "$tmp/qmc.ref" "$tmp/qmc.out" && [ $rc = 0 ]
+        check "qmc, $k rank(s) x $t thread(s): same bytes" $? "exit $rc, $(diff "$tmp/qmc.ref" "$tmp/qmc.out" | head -3) $(head -2 "$tmp/err")"
     done
 done
 
