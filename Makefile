@@ -34,7 +34,7 @@ SUPPORT_SRCS := $(wildcard tests/support/*.c)
 SUPPORT_LIB := $(B)/lib/libtestsupport.a
 TESTS := $(patsubst tests/%.c,$(B)/tests/%,$(wildcard tests/test_*.c))
 
-.PHONY: all help deps book-deps test run bench soak plots plots-check book book-check clean \
+.PHONY: all help deps book-deps test run bench reference soak plots plots-check book book-check clean \
         _test _run _bench _soak _plots _plots-check _book _book-check programs tests
 
 all: $(LIBFILES) $(PROGRAMS) $(BENCHES)
@@ -43,7 +43,8 @@ help:
 	@echo "make [all]     build the libraries and every program into build/"
 	@echo "make test      install missing packages, build, run every test (SAN=1: sanitizers, JUNIT=1: XML)"
 	@echo "make run       install missing packages, run every chapter program, print one table"
-	@echo "make bench     throughput benchmarks"
+	@echo "make bench     throughput benchmarks (and the error table, after make reference)"
+	@echo "make reference converged images of book and lambert for the error table, cached in build/"
 	@echo "make soak      the statistical tests over SEEDS seeds; prints the failure rate"
 	@echo "make plots     every figure under build/plots/"
 	@echo "make book      the tutorial as HTML and EPUB under build/book/"
@@ -78,24 +79,28 @@ _test: all $(TESTS)
 _run: all
 	@MC_BUILD=$(B) bash tools/run_table.sh
 
-_bench: all
-	@MC_BUILD=$(B) bash tools/run_bench.sh
+_bench: all reference
+	@MC_BUILD=$(B) MC_REF_BOOK=$(REF)/book-$(REF_TAG) bash tools/run_bench.sh
 
-SEEDS ?= 20
-_soak: all $(TESTS)
-	@MC_BUILD=$(B) bash tools/soak.sh $(SEEDS) $(TESTS)
-
-_plots: all
-	@$(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) V=$(V) figures
-_plots-check: all
-	@$(MAKE) --no-print-directory -f plots/Makefile.inc B=$(B) V=$(V) check
-_book: all $(TESTS)
-	@$(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) V=$(V) html
-_book-check: _book
-	@$(MAKE) --no-print-directory -f book/Makefile.inc B=$(B) check
-
-clean:
-	rm -rf build
+# Converged references: two independent renders (seeds 1001 and 1002) of
+# each scene, whose mean is the reference and whose difference measures its
+# own noise (bench/bench_render.c). The settings are in the file names, so
+# that changing them renders new ones; a render, once done, is kept.
+REF := $(B)/reference
+REF_WIDTH ?= 300
+REF_SPP ?= 1024
+REF_STRATEGY ?= mixture
+REF_TAG := $(REF_STRATEGY)-$(REF_WIDTH)-$(REF_SPP)
+REF_FILES := $(foreach s,book lambert,$(foreach h,a b,$(REF)/$(s)-$(REF_TAG)-$(h).pfm))
+reference: $(REF_FILES)
+ref_render = @mkdir -p $(REF) && echo "  REF     $@" && \
+	nice $(B)/bin/cornell_box --scene $(patsubst %-$(REF_TAG)-$(2).pfm,%,$(notdir $@)) \
+	    --strategy $(REF_STRATEGY) --width $(REF_WIDTH) --spp $(REF_SPP) --seed $(1) --threads 2 \
+	    -o $@ > $@.log
+$(REF)/%-a.pfm: | $(B)/bin/cornell_box
+	$(call ref_render,1001,a)
+$(REF)/%-b.pfm: | $(B)/bin/cornell_box
+	$(call ref_render,1002,b)
 
 include mk/rules.mk
 include mk/pgo.mk

@@ -30,6 +30,8 @@
 
 #include "examples/common/cli.h"
 #include "examples/common/outfile.h"
+#include "render/bdpt.h"
+#include "render/lighttrace.h"
 #include "render/render.h"
 #include "render/scenes.h"
 
@@ -62,7 +64,9 @@ static options parse(int argc, char **argv)
         {"--spp", APP_COUNT, &o.spp, "samples per pixel (default 100)", NULL, 0, 0},
         {"--samples", APP_COUNT, &o.spp, "same as --spp", NULL, 0, 0},
         {"--max-depth", APP_INT, &o.depth, "most ray segments per path (default 50)", NULL, 0, 1e6},
-        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (default mixture)", rt_strategy_names, 0, 0},
+        {"--strategy", APP_STRING, &o.strategy,
+         "sampling strategy: uniform, cosine, light, mixture, mis, lighttrace, bdpt, or bdpt:S,T "
+         "(one bidirectional strategy, unweighted) (default mixture)", NULL, 0, 0},
         {"--sampler", APP_CHOICE, &o.sampler,
          "where the uniforms come from: the pixel position jittered over cells and PCG32 for the rest, "
          "PCG32 for all, or Owen-scrambled Sobol (default stratified)", rt_sampler_names, 0, 0},
@@ -83,6 +87,12 @@ static options parse(int argc, char **argv)
     if (o.spp > UINT64_MAX / ((uint64_t)o.width * (uint64_t)o.width))
         app_fail(prog, "--spp %llu is too many for a %dx%d image", (unsigned long long)o.spp, o.width,
                  o.width);
+    rt_path_settings ps = rt_path_settings_default(RT_MIXTURE);
+    if (!rt_bdpt_strategy_parse(o.strategy, &ps))
+        app_fail(prog, "--strategy %s: not a strategy (uniform, cosine, light, mixture, mis, "
+                       "lighttrace, bdpt, bdpt:S,T with S >= 0, T >= 1, S + T >= 2)", o.strategy);
+    if (rt_strategy_splats(ps.strategy) && o.depth > RT_BDPT_MAX_DEPTH)
+        app_fail(prog, "--max-depth %d: %s takes at most %d", o.depth, o.strategy, RT_BDPT_MAX_DEPTH);
     if (strcmp(o.sampler, "sobol") == 0 && o.spp > UINT32_MAX)
         app_fail(prog, "--spp %llu: the sobol sampler takes at most 2^32 samples per pixel",
                  (unsigned long long)o.spp);
@@ -98,6 +108,9 @@ static void check_memory(const options *o)
 {
     double pixels = (double)o->width * (double)o->width;
     double need = pixels * (double)(sizeof(rt_pixel) + sizeof(mc_rng) + 3) + 64e6;
+    rt_path_settings ps = rt_path_settings_default(RT_MIXTURE);
+    if (rt_bdpt_strategy_parse(o->strategy, &ps) && rt_strategy_splats(ps.strategy))
+        need += pixels * 3.0 * sizeof(double) * RT_SPLAT_BUFFERS;
     double have = (double)sysconf(_SC_PHYS_PAGES) * (double)sysconf(_SC_PAGE_SIZE);
     struct rlimit rl;
     if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (double)rl.rlim_cur < have)
@@ -167,7 +180,11 @@ static void report(const options *o, const rt_image *img, const rt_render_stats 
     uint64_t fewest = UINT64_MAX;
     for (size_t i = 0; i < (size_t)img->width * (size_t)img->height; i++)
         fewest = img->px[i].n < fewest ? img->px[i].n : fewest;
-    if (fewest < 2)
+    /* Nor for the strategies that splat: a pixel's splats come from the
+     * light paths of every pixel, and their variance is not tracked. */
+    rt_path_settings ps = rt_path_settings_default(RT_MIXTURE);
+    bool splats = rt_bdpt_strategy_parse(o->strategy, &ps) && rt_strategy_splats(ps.strategy);
+    if (fewest < 2 || splats)
         for (int c = 0; c < 3; c++)
             rgb[c].std_error = (double)NAN;
     app_table t = {stdout, o->csv, NULL, 0, "cornell_box"};
@@ -229,7 +246,7 @@ int main(int argc, char **argv)
     }
     rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, o.width, o.width));
     rt_gamma gamma = RT_GAMMA_2;
-    (void)rt_strategy_parse(o.strategy, &job.path.strategy);
+    (void)rt_bdpt_strategy_parse(o.strategy, &job.path);
     (void)rt_sampler_parse(o.sampler, &job.sampler);
     (void)rt_gamma_parse(o.gamma, &gamma);
     job.path.max_depth = o.depth;

@@ -7,6 +7,7 @@
 
 #include "render/fast/rows.h"
 #include "render/jitter.h"
+#include "render/lighttrace.h"
 
 rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera)
 {
@@ -102,6 +103,8 @@ rt_sampler rt_render_sampler(const rt_render_job *job, mc_rng rng, uint64_t pixe
 
 int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
 {
+    if (rt_strategy_splats(job->path.strategy))
+        return rt_splat_render(job, img, stats);
     if (!job->scene || job->spp < 1 || job->camera.width != img->width ||
         job->camera.height != img->height || job->path.max_depth < 0 ||
         (job->sampler == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX))
