@@ -34,6 +34,7 @@
 #include <string.h>
 
 #include "examples/common/cli.h"
+#include "render/bdpt.h"
 #include "render/render.h"
 #include "render/scenes.h"
 
@@ -48,8 +49,19 @@
 #define BOOK_ERR_SECONDS 68.3
 #define BOOK_MSE 1.01e-3
 
-/* The strategies of the error table, in order. */
-static const char *const error_strategies[] = {"uniform", "cosine", "light", "mixture", "mis"};
+/* The rows of the error table, in order: a strategy (any name of
+ * rt_bdpt_strategy_parse), "+rr" for Russian roulette, and the share of
+ * the --spp samples per pixel it takes (the slow ones fewer, to keep the
+ * bench short; the measure does not depend on the sample count). */
+typedef struct error_row {
+    const char *name;
+    double spp_share;
+} error_row;
+static const error_row error_rows[] = {
+    {"uniform", 1.0},  {"cosine", 1.0},     {"light", 1.0},   {"mixture", 1.0},
+    {"mixture+rr", 1.0}, {"mis", 1.0},       {"lighttrace", 0.5}, {"bdpt", 0.25},
+    {"bdpt+rr", 0.5},
+};
 
 static const char *const prog = "bench_render";
 
@@ -141,13 +153,20 @@ static void error_table(const rt_scene *scene, rt_camera_params cp, uint64_t spp
     printf("\nerror at %dx%d against %s-{a,b}.pfm (their noise, %.3e, subtracted), %d threads; the "
            "book's program: %.1f s for 600x600 (%.2f s for %dx%d), MSE %.3g\n",
            width, width, prefix, noise, threads, BOOK_ERR_SECONDS, book_s, width, width, BOOK_MSE);
-    printf("%-12s %6s %9s %12s %14s %11s\n", "strategy", "spp", "seconds", "MSE", "x_book_equal_err",
+    printf("%-12s %6s %9s %12s %16s %13s\n", "strategy", "spp", "seconds", "MSE", "x_book_equal_err",
            "worst1%_share");
-    for (size_t i = 0; i < sizeof error_strategies / sizeof error_strategies[0]; i++) {
+    for (size_t i = 0; i < sizeof error_rows / sizeof error_rows[0]; i++) {
         rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, width, width));
-        if (!rt_strategy_parse(error_strategies[i], &job.path.strategy))
+        char name[32];
+        snprintf(name, sizeof name, "%s", error_rows[i].name);
+        char *plus = strstr(name, "+rr");
+        job.path.russian_roulette = plus != NULL;
+        if (plus)
+            *plus = '\0';
+        if (!rt_bdpt_strategy_parse(name, &job.path))
             continue;
-        job.spp = spp;
+        uint64_t n = (uint64_t)((double)spp * error_rows[i].spp_share);
+        job.spp = n > 0 ? n : 1;
         job.seed = seed;
         job.threads = threads;
         rt_render_stats st;
@@ -156,8 +175,8 @@ static void error_table(const rt_scene *scene, rt_camera_params cp, uint64_t spp
             break;
         }
         double mse = rt_image_mse(img, ref) - noise;
-        printf("%-12s %6llu %9.2f %12.4e %13.1fx %10.1f%%\n", error_strategies[i],
-               (unsigned long long)spp, st.seconds, mse,
+        printf("%-12s %6llu %9.2f %12.4e %15.1fx %12.1f%%\n", error_rows[i].name,
+               (unsigned long long)job.spp, st.seconds, mse,
                book_s * BOOK_MSE / (st.seconds * mse), 100.0 * worst_share(img, ref));
         fflush(stdout);
     }

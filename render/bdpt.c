@@ -84,11 +84,16 @@ static bool joinable(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int i, int n
     return !x->delta && x->m && x->m->kind == RT_MAT_LAMBERT;
 }
 
+/* Which walk makes the next vertex from a vertex: a subpath's own
+ * (cosine sampling at a Lambertian surface, from either end) or the
+ * start of a light subpath (cosine emission). */
+typedef enum role { AS_LIGHT, AS_CAMERA, AS_ORIGIN } role;
+
 /* The density per unit solid angle with which `from` sends its next ray
- * toward `to`: the film's for the camera, cosine emission from the start
- * of a light subpath, the cosine pdf of a Lambertian surface; 0 through a
- * specular vertex (the caller counts that as 1). */
-static double dir_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, bool as_origin, vec3 to)
+ * toward `to` in role r: the film's for the camera, cosine emission from
+ * the start of a light subpath, a Lambertian surface's sampling density;
+ * 0 through a specular vertex (the caller counts that as 1). */
+static double dir_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r, vec3 to)
 {
     if (from->kind == RT_BDPT_CAMERA) {
         vec3 dir;
@@ -99,7 +104,7 @@ static double dir_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, bool as_
         return 1.0 / (film * cos_theta * cos_theta * cos_theta);
     }
     vec3 dir = vec3_normalize(vec3_sub(to, from->p));
-    if (as_origin || from->kind == RT_BDPT_LIGHT) {
+    if (r == AS_ORIGIN || from->kind == RT_BDPT_LIGHT) {
         double cos_e = vec3_dot(from->kind == RT_BDPT_LIGHT ? from->ng : from->ns, dir);
         return cos_e > 0.0 ? cos_e * MC_INV_PI : 0.0;
     }
@@ -122,36 +127,48 @@ static double to_area(double pdf_dir, vec3 from, const rt_bdpt_vertex *to)
  * directions cancel in every ratio (Veach 10.3.5). */
 static double remap0(double p) { return p != 0.0 ? p : 1.0; }
 
+/* The power heuristic's weight of strategy s from the densities of the
+ * joined path of n vertices: pl[i], pc[i] as in rt_bdpt_mis_weight
+ * (remapped), ok[r] whether strategy r can join. Strategy r + 1 differs
+ * from r in making x[r] from the light side, so p_{r+1} / p_r =
+ * pl[r] / pc[r]; the weight is 1 / sum_r (p_r / p_s)^2, in O(n). */
+static double weight_from(const double *pl, const double *pc, const bool *ok, int n, int s, int twice)
+{
+    double sum = s == twice ? 2.0 : 1.0, ratio = 1.0;
+    for (int r = s + 1; r < n; r++) {
+        ratio *= pl[r - 1] / pc[r - 1];
+        if (ok[r])
+            sum += ratio * ratio * (r == twice ? 2.0 : 1.0);
+    }
+    ratio = 1.0;
+    for (int r = s - 1; r >= 0; r--) {
+        ratio *= pc[r] / pl[r];
+        if (ok[r])
+            sum += ratio * ratio * (r == twice ? 2.0 : 1.0);
+    }
+    return 1.0 / sum;
+}
+
 double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, int s)
 {
     double pl[RT_BDPT_MAX_DEPTH + 2], pc[RT_BDPT_MAX_DEPTH + 2];
+    bool ok[RT_BDPT_MAX_DEPTH + 2];
     /* pl[i]: the density of x[i] as the light subpath's walk would make
      * it from x[i-1] (and x[0] as its start); pc[i]: as the camera's would
      * from x[i+1]. Per unit area. */
-    pl[0] = origin_pdf(c, x);
+    pl[0] = remap0(origin_pdf(c, x));
     for (int i = 1; i < n; i++)
-        pl[i] = remap0(to_area(dir_pdf(c, &x[i - 1], i == 1, x[i].p), x[i - 1].p, &x[i]));
-    pl[0] = remap0(pl[0]);
+        pl[i] = remap0(to_area(dir_pdf(c, &x[i - 1], i == 1 ? AS_ORIGIN : AS_LIGHT, x[i].p),
+                               x[i - 1].p, &x[i]));
     for (int i = n - 2; i >= 0; i--)
-        pc[i] = remap0(to_area(dir_pdf(c, &x[i + 1], false, x[i].p), x[i + 1].p, &x[i]));
+        pc[i] = remap0(to_area(dir_pdf(c, &x[i + 1], AS_CAMERA, x[i].p), x[i + 1].p, &x[i]));
+    pc[n - 1] = 1.0;
     /* Strategy r joins x[r-1] and x[r] (r = 0: the camera subpath ends on
-     * the emitter); p_{r+1} / p_r = pl[r] / pc[r]. The sum is over r of
-     * (p_r / p_s)^2. */
-    double sum = 0.0;
-    int twice = c->ps->mis_double - 1;
-    for (int r = 0; r < n; r++) {
-        bool ok = r == 0 ? origin_pdf(c, &x[0]) > 0.0
-                         : joinable(c, &x[r - 1], r - 1, n) && joinable(c, &x[r], r, n);
-        if (!ok)
-            continue;
-        double ratio = 1.0;
-        for (int i = s; i < r; i++)
-            ratio *= pl[i] / pc[i];
-        for (int i = r; i < s; i++)
-            ratio *= pc[i] / pl[i];
-        sum += ratio * ratio * (r == twice ? 2.0 : 1.0);
-    }
-    return sum > 0.0 ? 1.0 / sum : 0.0;
+     * the emitter). */
+    ok[0] = origin_pdf(c, &x[0]) > 0.0;
+    for (int r = 1; r < n; r++)
+        ok[r] = joinable(c, &x[r - 1], r - 1, n) && joinable(c, &x[r], r, n);
+    return weight_from(pl, pc, ok, n, s, c->ps->mis_double - 1);
 }
 
 /* --- the walks ---------------------------------------------------------- */
@@ -183,11 +200,13 @@ static int emitter_of(const rt_scene *s, int prim)
 /* Continues a subpath along r from its last vertex, appending a vertex
  * per hit, until n vertices, a miss or absorption; `segment` is the
  * sampler's segment of the first hit. Returns the vertex count. */
-static int walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, int n, int max_n,
-                int segment, rt_sampler *sampler, uint64_t *segments)
+static int walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, int n,
+                int max_n, int segment, rt_sampler *sampler, uint64_t *segments)
 {
     const rt_scene *s = c->scene;
-    while (n < max_n) {
+    const rt_path_settings *ps = c->ps;
+    vec3 start = beta;
+    for (int k = 0; n < max_n; k++) {
         rt_hit h;
         ++*segments;
         if (!rt_scene_hit(s, r, HUGE_VAL, &h))
@@ -214,6 +233,17 @@ static int walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, in
             break;
         beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp / pd);
         r = rt_ray_make(h.p, dir);
+        /* Russian roulette as in render/integrator.c, on the throughput
+         * since the subpath's start: it changes how often a subpath goes
+         * on, not what it estimates, and the MIS weights (functions of the
+         * path alone) still sum to 1. */
+        if (ps->russian_roulette && k + 1 >= ps->rr_start) {
+            double q = fmax(beta.x / start.x, fmax(beta.y / start.y, beta.z / start.z));
+            q = q < 0.95 ? q : 0.95;
+            if (!(q > 0.0) || rt_sampler_1d(sampler) >= q)
+                break;
+            beta = vec3_scale(beta, 1.0 / q);
+        }
     }
     return n;
 }
@@ -261,6 +291,77 @@ static int light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex 
 
 /* --- joining ------------------------------------------------------------ */
 
+/* The densities of the two subpaths that do not depend on how they are
+ * joined (a Lambertian vertex's density does not depend on the direction
+ * the path arrived from), remapped: lf[i], lr[i] are pl and pc of light
+ * vertex i within its subpath (pc from vertex i + 1), cf[j], cr[j] pc and
+ * pl of camera vertex j (pl from vertex j + 1); jl, jc whether the vertex
+ * can be joined. */
+typedef struct subpath_pdfs {
+    double lf[RT_BDPT_MAX_DEPTH], lr[RT_BDPT_MAX_DEPTH];
+    double cf[RT_BDPT_MAX_DEPTH + 1], cr[RT_BDPT_MAX_DEPTH + 1];
+    bool jl[RT_BDPT_MAX_DEPTH], jc[RT_BDPT_MAX_DEPTH + 1];
+} subpath_pdfs;
+
+/* The density of `to` made from `from` (as_origin: from starts a light
+ * subpath), per unit area, remapped. */
+static double area_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r,
+                       const rt_bdpt_vertex *to)
+{
+    return remap0(to_area(dir_pdf(c, from, r, to->p), from->p, to));
+}
+
+static void cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int nl,
+                       const rt_bdpt_vertex *cam, int nc, subpath_pdfs *sp)
+{
+    for (int i = 0; i < nl; i++) {
+        sp->lf[i] = i == 0 ? remap0(origin_pdf(c, &light[0])) : area_pdf(c, &light[i - 1], i == 1 ? AS_ORIGIN : AS_LIGHT,
+                                                                  &light[i]);
+        sp->lr[i] = i + 1 < nl ? area_pdf(c, &light[i + 1], AS_CAMERA, &light[i]) : 1.0;
+        sp->jl[i] = i == 0 || joinable(c, &light[i], i, i + 2);
+    }
+    for (int j = 0; j < nc; j++) {
+        sp->cf[j] = j == 0 ? 1.0 : area_pdf(c, &cam[j - 1], AS_CAMERA, &cam[j]);
+        sp->cr[j] = j + 1 < nc ? area_pdf(c, &cam[j + 1], AS_LIGHT, &cam[j]) : 1.0;
+        sp->jc[j] = j == 0 || joinable(c, &cam[j], 1, 3);
+    }
+}
+
+/* rt_bdpt_mis_weight of strategy (s, t) from the cached densities and the
+ * few that the join changes: in O(s + t). */
+static double join_weight(const rt_bdpt_ctx *c, const subpath_pdfs *sp, const rt_bdpt_vertex *light,
+                          int s, const rt_bdpt_vertex *cam, int t)
+{
+    int n = s + t;
+    double pl[RT_BDPT_MAX_DEPTH + 2], pc[RT_BDPT_MAX_DEPTH + 2];
+    bool ok[RT_BDPT_MAX_DEPTH + 2], jn[RT_BDPT_MAX_DEPTH + 2];
+    const rt_bdpt_vertex *z = &cam[t - 1];
+    for (int i = 0; i < s; i++) {
+        pl[i] = sp->lf[i];
+        pc[i] = sp->lr[i];
+        jn[i] = sp->jl[i];
+    }
+    for (int i = s; i < n; i++) {
+        int j = n - 1 - i; /* x[i] is camera vertex j */
+        pc[i] = sp->cf[j];
+        pl[i] = sp->cr[j];
+        jn[i] = sp->jc[j];
+    }
+    if (s == 0) {
+        pl[0] = remap0(origin_pdf(c, z));
+        jn[0] = origin_pdf(c, z) > 0.0;
+        pl[1] = area_pdf(c, z, AS_ORIGIN, &cam[t - 2]);
+    } else {
+        const rt_bdpt_vertex *y = &light[s - 1];
+        pl[s] = area_pdf(c, y, s == 1 ? AS_ORIGIN : AS_LIGHT, z);
+        pc[s - 1] = area_pdf(c, z, AS_CAMERA, y);
+    }
+    ok[0] = jn[0] && (s > 0 || origin_pdf(c, z) > 0.0);
+    for (int r = 1; r < n; r++)
+        ok[r] = jn[r - 1] && jn[r];
+    return weight_from(pl, pc, ok, n, s, c->ps->mis_double - 1);
+}
+
 static bool is_black(vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
 
 /* What the end vertex x of a subpath sends toward the point `to`, per
@@ -285,17 +386,6 @@ static bool visible(const rt_scene *s, vec3 a, vec3 b, uint64_t *segments)
     rt_hit h;
     ++*segments;
     return !rt_scene_hit(s, rt_ray_make(a, vec3_scale(d, 1.0 / dist)), dist - rt_scene_t_min(s), &h);
-}
-
-/* The joined path of strategy (s, t) in x, light end first. */
-static int joined(const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t,
-                  rt_bdpt_vertex *x)
-{
-    for (int i = 0; i < s; i++)
-        x[i] = light[i];
-    for (int j = 0; j < t; j++)
-        x[s + j] = cam[t - 1 - j];
-    return s + t;
 }
 
 /* The unweighted contribution of strategy (s, t) with t >= 2 (s = 0: the
@@ -323,7 +413,7 @@ static vec3 join(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s, const
 /* Strategy (s, 1): the light subpath's end seen by the camera, splatted
  * with the camera importance (and weight w_fn's weight). */
 static void splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s,
-                            const rt_bdpt_vertex *cam0, bool weighted, double *splat,
+                            const rt_bdpt_vertex *cam0, const subpath_pdfs *sp, double *splat,
                             uint64_t *segments)
 {
     const rt_bdpt_vertex *y = &light[s - 1];
@@ -340,11 +430,8 @@ static void splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, i
     if (!(g > 0.0) || !visible(c->scene, y->p, cam0->p, segments))
         return;
     vec3 v = vec3_scale(vec3_mul(y->beta, fy), g * we);
-    if (weighted) {
-        rt_bdpt_vertex x[RT_BDPT_MAX_DEPTH + 2];
-        int n = joined(light, s, cam0, 1, x);
-        v = vec3_scale(v, rt_bdpt_mis_weight(c, x, n, s));
-    }
+    if (sp)
+        v = vec3_scale(v, join_weight(c, sp, light, s, cam0, 1));
     /* A non-finite splat would spoil a pixel for good: left out (the
      * factors above are finite for any path that gets here). */
     if (!isfinite(v.x) || !isfinite(v.y) || !isfinite(v.z))
@@ -371,6 +458,9 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
     int nc = lighttrace ? 1
                         : walk(c, camera_ray, cam[0].beta, cam, 1, depth + 1, 0, sampler, segments);
     int nl = light_walk(c, sampler, light, depth, segments);
+    subpath_pdfs sp;
+    if (all)
+        cache_pdfs(c, light, nl, cam, nc, &sp);
     for (int t = 1; t <= nc; t++)
         for (int s = 0; s <= nl; s++) {
             if (s + t < 2 || s + t - 1 > depth || (t == 1 && s == 0))
@@ -378,17 +468,14 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
             if (!all && !lighttrace && (s != ps->bdpt_s || t != ps->bdpt_t))
                 continue;
             if (t == 1) {
-                splat_to_camera(c, light, s, &cam[0], all, splat, segments);
+                splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, splat, segments);
                 continue;
             }
             vec3 v = join(c, light, s, cam, t, segments);
             if (is_black(v))
                 continue;
-            if (all) {
-                rt_bdpt_vertex x[RT_BDPT_MAX_DEPTH + 2];
-                int n = joined(light, s, cam, t, x);
-                v = vec3_scale(v, rt_bdpt_mis_weight(c, x, n, s));
-            }
+            if (all)
+                v = vec3_scale(v, join_weight(c, &sp, light, s, cam, t));
             L = vec3_add(L, v);
         }
     return L;
@@ -398,14 +485,17 @@ bool rt_bdpt_strategy_parse(const char *name, rt_path_settings *ps)
 {
     ps->bdpt_s = ps->bdpt_t = 0;
     if (strncmp(name, "bdpt:", 5) == 0) {
+        /* Digits only: strtol would also take blanks and signs. */
+        size_t digits = strspn(name + 5, "0123456789");
+        if (digits == 0 || name[5 + digits] != ',' || strspn(name + 6 + digits, "0123456789") == 0)
+            return false;
         char *end;
         long s = strtol(name + 5, &end, 10);
         if (end == name + 5 || *end != ',' || s < 0 || s > RT_BDPT_MAX_DEPTH)
             return false;
         const char *tp = end + 1;
         long t = strtol(tp, &end, 10);
-        if (end == tp || *end != '\0' || t < 1 || t > RT_BDPT_MAX_DEPTH + 1 || s + t < 2 ||
-            name[5] == '-' || name[5] == '+' || *tp == '-' || *tp == '+' || *tp == ' ')
+        if (end == tp || *end != '\0' || t < 1 || t > RT_BDPT_MAX_DEPTH + 1 || s + t < 2)
             return false;
         ps->strategy = RT_BDPT;
         ps->bdpt_s = (int)s;
