@@ -89,9 +89,9 @@ _bench: all reference
 REF := $(B)/reference
 space := $(subst ,, )
 REF_WIDTH ?= 300
-REF_SPP ?= 512
-REF_STRATEGY ?= bdpt
-REF_FLAGS ?= --roulette
+REF_SPP ?= 1024
+REF_STRATEGY ?= mixture
+REF_FLAGS ?=
 REF_TAG := $(REF_STRATEGY)$(subst --,-,$(subst $(space),,$(REF_FLAGS)))-$(REF_WIDTH)-$(REF_SPP)
 REF_FILES := $(foreach s,book lambert,$(foreach h,a b,$(REF)/$(s)-$(REF_TAG)-$(h).pfm))
 reference: $(REF_FILES)
