@@ -1,11 +1,14 @@
 /* examples/cornell_box.c - the Cornell box of "Ray Tracing: The Rest of Your
  * Life", rendered with the book's mixture of light and material densities
- * (chapters 8-10) or any of four other strategies that must agree with it.
+ * (chapters 8-10) or any of six other strategies that must agree with it:
+ * among them light tracing and bidirectional path tracing (render/bdpt.h),
+ * and with --strategy bdpt:S,T one bidirectional strategy alone.
  *
  * Build: make; run:
  *   build/bin/cornell_box --scene book --spp 100 -o cornell.png
  *   build/bin/cornell_box --scene lambert --strategy uniform -o uniform.pfm
  *   build/bin/cornell_box --scene book --sampler sobol --reference ref.pfm -o sobol.pfm
+ *   build/bin/cornell_box --scene book --strategy bdpt --roulette -o bdpt.png
  * Prints the image's mean linear RGB (standard errors from the per-pixel
  * variances), the paths, ray segments and dropped non-finite samples, and
  * the time. --sampler picks where the uniforms come from

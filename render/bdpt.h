@@ -35,7 +35,10 @@
  * divides their splats by N. For the weights, every strategy takes one
  * sample per pixel sample, and the camera's density is the film's,
  * 1 / (A_film cos^3 theta) with A_film the whole image (Veach 10.3.3).
- * Lambertian surfaces are the only ones that can be joined.
+ * Lambertian surfaces are the only ones that can be joined. With
+ * Russian roulette (rt_path_settings) both walks stop as the book's
+ * integrator's paths do; the weights, functions of the path alone, still
+ * sum to 1 over the strategies.
  */
 #ifndef RT_BDPT_H
 #define RT_BDPT_H
