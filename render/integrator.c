@@ -121,7 +121,7 @@ static double lights_value(const lights_at *a, vec3 d)
 
 /* The material's density at a diffuse hit: pdf_cosine about the normal
  * (rt_scatter_pdf), through the formulas pdf_cosine uses. */
-static vec3 material_generate(const rt_scatter *sr, rt_sampler *sampler)
+RT_HOT_INLINE vec3 material_generate(const rt_scatter *sr, rt_sampler *sampler)
 {
     return rt_cosine_generate(sr->normal, sampler);
 }

@@ -53,7 +53,7 @@ static inline double rt_jitter_in_cell(uint64_t i, uint64_t n, double u)
  * the pixel's sampler: a point of its cell c while k < m (c then moves on
  * by the stride), a uniform point after. The two uniforms are the
  * sampler's first 2D. Inline: it starts every path. */
-static inline rt_ray rt_sample_ray(const rt_camera *camera, const rt_jitter *jt, int x, int y,
+RT_HOT_INLINE rt_ray rt_sample_ray(const rt_camera *camera, const rt_jitter *jt, int x, int y,
                                    uint64_t k, rt_cell *c, rt_sampler *sampler)
 {
     /* BEGIN SNIPPET sample_ray */

@@ -102,7 +102,7 @@ static inline vec3 rt_light_generate(const rt_light *l, vec3 origin, vec3 axis,
 
 /* rt_lights_generate from the prepared origin: the same direction from
  * the same uniforms. */
-static inline vec3 rt_lights_at_generate(const rt_lights_at *at, rt_sampler *sampler)
+RT_HOT_INLINE vec3 rt_lights_at_generate(const rt_lights_at *at, rt_sampler *sampler)
 {
     uint32_t i = rt_sampler_index(sampler, (uint32_t)at->n);
     double u1, u2;
@@ -133,7 +133,7 @@ static inline double rt_lights_at_value(const rt_lights_at *at, vec3 d)
 }
 
 /* pdf_generate of pdf_cosine(normal) (unit normal). */
-static inline vec3 rt_cosine_generate(vec3 normal, rt_sampler *sampler)
+RT_HOT_INLINE vec3 rt_cosine_generate(vec3 normal, rt_sampler *sampler)
 {
     double u1, u2;
     rt_sampler_2d(sampler, &u1, &u2);

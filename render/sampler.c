@@ -30,31 +30,41 @@ rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, m
     if (kind == RT_SAMPLER_SOBOL) {
         s.sobol = true;
         s.n = (uint32_t)spp;
-        s.seed = seed;
-        s.pixel = pixel;
+        s.base = mc_qmc_stream_seed(seed, pixel);
     }
     return s;
 }
 
-/* Every request, 1D or 2D, is one call of mc_sobol_padded2 with the
- * request's first dimension as its `pair`: dimensions are never handed out
- * twice within a sample, so no two requests of a sample share a
- * permutation or a scramble. A 1D request keeps the first coordinate and
- * moves on by one dimension, as pbrt's Get1D does; a 2D request moves on
- * by two. */
+/* mc_sobol_padded2's construction with the keys drawn from the pixel's
+ * base, hashed once per pixel instead of once per request (the requests
+ * took a third of a Sobol render's instructions that way). The request
+ * at dimension d keys its index permutation and its first scramble with
+ * the two halves of the 64-bit hash of (base, 2d), its second scramble
+ * with half of that of (base, 2d + 1): each a full-avalanche hash
+ * (mc_qmc_stream_seed), so keys of different requests, pixels and seeds
+ * are independent. Dimensions are never handed out twice within a sample
+ * (a 1D request moves on by one, as pbrt's Get1D does, a 2D request by
+ * two), so no two requests of a sample share a permutation or a
+ * scramble. */
+static uint32_t sobol_index(const rt_sampler *s, uint64_t h)
+{
+    return mc_permutation_element(s->k, s->n, (uint32_t)h);
+}
+
 double rt_sampler_sobol_1d(rt_sampler *s)
 {
-    double u[2];
-    mc_sobol_padded2(s->seed, s->pixel, s->dim, s->k, s->n, u);
+    uint64_t h = mc_qmc_stream_seed(s->base, 2u * (uint64_t)s->dim);
+    uint32_t v = mc_owen_scramble_u32(mc_sobol_u32(sobol_index(s, h), 0u), (uint32_t)(h >> 32));
     s->dim += s->reuse_dim ? 0u : 1u;
-    return u[0];
+    return (double)v * 0x1p-32;
 }
 
 void rt_sampler_sobol_2d(rt_sampler *s, double *u1, double *u2)
 {
-    double u[2];
-    mc_sobol_padded2(s->seed, s->pixel, s->dim, s->k, s->n, u);
+    uint64_t h = mc_qmc_stream_seed(s->base, 2u * (uint64_t)s->dim);
+    uint64_t h2 = mc_qmc_stream_seed(s->base, 2u * (uint64_t)s->dim + 1u);
+    uint32_t index = sobol_index(s, h);
+    *u1 = (double)mc_owen_scramble_u32(mc_sobol_u32(index, 0u), (uint32_t)(h >> 32)) * 0x1p-32;
+    *u2 = (double)mc_owen_scramble_u32(mc_sobol_u32(index, 1u), (uint32_t)h2) * 0x1p-32;
     s->dim += 2u;
-    *u1 = u[0];
-    *u2 = u[1];
 }

@@ -14,11 +14,14 @@
  *                          request of sample k of pixel p is the first or
  *                          the first two dimensions of Sobol point
  *                          perm(k), with the index permutation perm and the
- *                          Owen scramble hashed from (seed, p, dimension)
- *                          (mc_sobol_padded2). Each request is a stratified
- *                          set over the pixel's samples; requests differ in
- *                          their permutations, which makes them independent
- *                          of one another, so the estimate stays unbiased.
+ *                          Owen scrambles keyed by a hash of (seed, p,
+ *                          dimension) (mc_sobol_padded2's construction,
+ *                          with the pixel's part of the hash computed once
+ *                          per pixel). Each request is a stratified set
+ *                          over the pixel's samples; requests differ in
+ *                          their permutations and scrambles, which makes
+ *                          them independent of one another, so the
+ *                          estimate stays unbiased.
  * The two PCG32 kinds draw one PCG32 output per uniform, in the order of
  * the requests, from a stream continued over the passes (render/render.c).
  *
@@ -72,14 +75,14 @@ typedef struct rt_sampler {
     bool reuse_dim;
     uint32_t dim; /* sobol: the next dimension of this sample */
     uint32_t k, n; /* sobol: this sample's index and the pixel's sample count */
-    uint64_t seed, pixel;
+    uint64_t base; /* sobol: mc_qmc_stream_seed(seed, pixel) */
 } rt_sampler;
 
 /* A sampler drawing every uniform from rng (independent and stratified,
  * and the tests' way to call the integrator with a stream). */
 static inline rt_sampler rt_sampler_from_rng(mc_rng rng)
 {
-    rt_sampler s = {rng, false, false, 0, 0, 1, 0, 0};
+    rt_sampler s = {rng, false, false, 0, 0, 1, 0};
     return s;
 }
 
@@ -107,12 +110,23 @@ static inline void rt_sampler_segment(rt_sampler *s, int depth)
         s->dim = 2u + (uint32_t)depth * RT_SAMPLER_SEGMENT_DIMS;
 }
 
+/* For the functions that draw at every path vertex (the camera ray, the
+ * cosine direction): inline even where the compiler's size heuristics
+ * would not, since the sampler's branch grew them past its limit and the
+ * calls cost the default sampler 3% of the book render's instructions
+ * (docs/performance.md). */
+#if defined(__GNUC__)
+#define RT_HOT_INLINE static inline __attribute__((always_inline))
+#else
+#define RT_HOT_INLINE static inline
+#endif
+
 /* The Sobol requests, out of line: they hash and scramble. */
 double rt_sampler_sobol_1d(rt_sampler *s);
 void rt_sampler_sobol_2d(rt_sampler *s, double *u1, double *u2);
 
 /* The next uniform in [0, 1) of the sample. */
-static inline double rt_sampler_1d(rt_sampler *s)
+RT_HOT_INLINE double rt_sampler_1d(rt_sampler *s)
 {
     if (!s->sobol)
         return mc_rng_uniform(&s->rng);
@@ -121,7 +135,7 @@ static inline double rt_sampler_1d(rt_sampler *s)
 
 /* The next two uniforms in [0, 1) of the sample; for PCG32, *u1 is drawn
  * first. */
-static inline void rt_sampler_2d(rt_sampler *s, double *u1, double *u2)
+RT_HOT_INLINE void rt_sampler_2d(rt_sampler *s, double *u1, double *u2)
 {
     if (!s->sobol) {
         *u1 = mc_rng_uniform(&s->rng);
@@ -135,7 +149,7 @@ static inline void rt_sampler_2d(rt_sampler *s, double *u1, double *u2)
  * draw (mc_rng_bounded), or floor(n u) of the next 1D (u one of the 2^32
  * equally likely multiples of 2^-32: each integer's probability is off
  * from 1 / n by less than 2^-32, far below any error bar). */
-static inline uint32_t rt_sampler_index(rt_sampler *s, uint32_t n)
+RT_HOT_INLINE uint32_t rt_sampler_index(rt_sampler *s, uint32_t n)
 {
     if (!s->sobol)
         return mc_rng_bounded(&s->rng, n);
