@@ -132,8 +132,25 @@ static double remap0(double p) { return p != 0.0 ? p : 1.0; }
  * (remapped), ok[r] whether strategy r can join. Strategy r + 1 differs
  * from r in making x[r] from the light side, so p_{r+1} / p_r =
  * pl[r] / pc[r]; the weight is 1 / sum_r (p_r / p_s)^2, in O(n). */
-static double weight_from(const double *pl, const double *pc, const bool *ok, int n, int s, int twice)
+static double weight_from(const double *pl, const double *pc, bool *ok, int n, int s, int twice,
+                          bool x1_specular)
 {
+    /* Light reached through a specular vertex right after the camera
+     * subpath's last diffuse bounce (the caustic under the glass sphere):
+     * with the deltas counted as 1 the densities of s = 0 and of the joins
+     * are not comparable, and the power heuristic would give the rare
+     * camera path that finds the lamp through the glass a sizeable weight,
+     * i.e. fireflies. Any weights that are functions of the path and sum
+     * to 1 over the strategies that can make it keep the sum unbiased
+     * (Veach 9.2): such a path goes to the joins alone when there is one. */
+    if (x1_specular && ok[0])
+        for (int r = 1; r < n; r++)
+            if (ok[r]) {
+                ok[0] = false;
+                break;
+            }
+    if (!ok[s])
+        return 0.0;
     double sum = s == twice ? 2.0 : 1.0, ratio = 1.0;
     for (int r = s + 1; r < n; r++) {
         ratio *= pl[r - 1] / pc[r - 1];
@@ -168,7 +185,7 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
     ok[0] = origin_pdf(c, &x[0]) > 0.0;
     for (int r = 1; r < n; r++)
         ok[r] = joinable(c, &x[r - 1], r - 1, n) && joinable(c, &x[r], r, n);
-    return weight_from(pl, pc, ok, n, s, c->ps->mis_double - 1);
+    return weight_from(pl, pc, ok, n, s, c->ps->mis_double - 1, n > 2 && x[1].delta);
 }
 
 /* --- the walks ---------------------------------------------------------- */
@@ -359,7 +376,10 @@ static double join_weight(const rt_bdpt_ctx *c, const subpath_pdfs *sp, const rt
     ok[0] = jn[0] && (s > 0 || origin_pdf(c, z) > 0.0);
     for (int r = 1; r < n; r++)
         ok[r] = jn[r - 1] && jn[r];
-    return weight_from(pl, pc, ok, n, s, c->ps->mis_double - 1);
+    /* x[1]: the second light vertex, the camera subpath's last, or the
+     * one before it. */
+    const rt_bdpt_vertex *x1 = s >= 2 ? &light[1] : s == 1 ? z : &cam[t - 2];
+    return weight_from(pl, pc, ok, n, s, c->ps->mis_double - 1, n > 2 && x1->delta);
 }
 
 static bool is_black(vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }

@@ -25,7 +25,10 @@
  *     samples it. Specular vertices (glass, metal) cannot be joined: a
  *     strategy that would join at one is left out of the sum, and the
  *     densities through it count as 1 in both directions (the deltas
- *     cancel).
+ *     cancel). One exception to the heuristic: a path whose light end is
+ *     reached through a specular vertex (the caustic) goes wholly to the
+ *     joins when one can make it, not partly to s = 0 (see
+ *     weight_from in bdpt.c).
  * The camera's importance for pixel j is W_j = 1 / (A_pix cos^3 theta)
  * per unit solid angle: a pixel's value is the mean of the radiance over
  * its area A_pix of the image plane at distance 1, and a patch dA of that
