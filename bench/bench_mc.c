@@ -8,6 +8,16 @@
  * samples/s measured on the reference machine). It also checks that the 1-
  * and 2-thread pi estimates are bit-identical and exits 1 if they are not.
  *
+ * A second table ("Quasi-Monte Carlo" chapter) gives the point sources of
+ * mc/qmc.h in millions of coordinates per second (points per second per
+ * dimension) with the ratio to PCG32's uniform doubles: Sobol points by
+ * index, with a random digital shift, Owen scrambled (through their
+ * functions, which hash the scramble's seed at every call; through the
+ * cursor, which hashes it once per point; and through mc_qmc_fill, which
+ * fills runs of 1024 samples one dimension at a time), permuted Halton, and
+ * the renderer's padded pairs. Each row is the median thread CPU time of
+ * five runs over D = 4 dimensions of consecutive indices.
+ *
  * Build and run: make bench   (or: make all && build/bench/bench_mc)
  */
 #include <stdbool.h>
@@ -16,6 +26,7 @@
 #include "examples/common/cli.h"
 #include "examples/common/timing.h"
 #include "mc/pi.h"
+#include "mc/qmc.h"
 #include "mc/rng.h"
 
 /* Samples/s of the book's program (drand48, one point per iteration),
@@ -63,6 +74,125 @@ static double rate_pi(pi_fn f, uint64_t n, int threads, mc_estimate *e)
     return best;
 }
 
+/* ---- quasi-Monte Carlo point sources ---- */
+
+/* Dimensions per point in the QMC rows. */
+enum { QMC_DIM = 4 };
+
+/* A loop of app_bench_ns over n coordinates of one point source; the run's
+ * rng only picks the scramble seed. */
+static double q_pcg(void *ctx, uint64_t n, mc_rng *rng)
+{
+    (void)ctx;
+    double acc = 0.0;
+    for (uint64_t k = 0; k < n; k++)
+        acc += mc_rng_uniform(rng);
+    return acc;
+}
+
+static double q_method(void *ctx, uint64_t n, mc_rng *rng)
+{
+    int which = *(const int *)ctx;
+    uint64_t seed = mc_rng_u32(rng), points = n / QMC_DIM;
+    double acc = 0.0;
+    for (uint32_t i = 0; i < points; i++) {
+        for (unsigned d = 0; d < QMC_DIM; d++) {
+            switch (which) {
+            case 0:
+                acc += mc_sobol(i, d);
+                break;
+            case 1:
+                acc += mc_sobol_xor(i, d, seed, 3u);
+                break;
+            case 2:
+                acc += mc_sobol_owen(i, d, seed, 3u);
+                break;
+            default:
+                acc += mc_halton_permuted(i, d, seed, 3u);
+                break;
+            }
+        }
+    }
+    return acc;
+}
+
+static double q_cursor(void *ctx, uint64_t n, mc_rng *rng)
+{
+    mc_qmc_method method = *(const mc_qmc_method *)ctx;
+    uint64_t seed = mc_rng_u32(rng), points = n / QMC_DIM;
+    double acc = 0.0;
+    for (uint64_t i = 0; i < points; i++) {
+        mc_qmc_cursor c = mc_qmc_begin(method, seed, 3u, i);
+        for (unsigned d = 0; d < QMC_DIM; d++)
+            acc += mc_qmc_next(&c);
+    }
+    return acc;
+}
+
+/* Runs of 1024 consecutive samples, one dimension at a time. */
+static double q_fill(void *ctx, uint64_t n, mc_rng *rng)
+{
+    mc_qmc_method method = *(const mc_qmc_method *)ctx;
+    uint64_t seed = mc_rng_u32(rng), points = n / QMC_DIM;
+    double acc = 0.0, out[1024];
+    for (uint64_t i = 0; i < points; i += 1024u) {
+        for (unsigned d = 0; d < QMC_DIM; d++) {
+            mc_qmc_fill(method, seed, 3u, i, 1024u, d, out);
+            for (int k = 0; k < 1024; k++)
+                acc += out[k];
+        }
+    }
+    return acc;
+}
+
+/* Two pairs of 64 samples per pixel, as a renderer draws them. */
+static double q_padded(void *ctx, uint64_t n, mc_rng *rng)
+{
+    (void)ctx;
+    uint64_t seed = mc_rng_u32(rng), points = n / QMC_DIM;
+    double acc = 0.0, u[2];
+    for (uint64_t i = 0; i < points; i++) {
+        for (uint32_t pair = 0; pair < QMC_DIM / 2; pair++) {
+            mc_sobol_padded2(seed, i / 64u, pair, (uint32_t)(i % 64u), 64u, u);
+            acc += u[0] + u[1];
+        }
+    }
+    return acc;
+}
+
+static void qmc_row(const char *what, double ns, double pcg_ns)
+{
+    printf("%-36s %12.1f %10.2f %12.2f\n", what, 1e3 / ns, ns, ns / pcg_ns);
+}
+
+static void qmc_table(void)
+{
+    const uint64_t n = UINT64_C(1) << 24, seed = 2385u;
+    static const int sobol = 0, xor = 1, owen = 2, halton = 3;
+    static const mc_qmc_method c_rand = MC_QMC_RANDOM, c_owen = MC_QMC_SOBOL_OWEN,
+                               c_halton = MC_QMC_HALTON, c_sobol = MC_QMC_SOBOL,
+                               c_xor = MC_QMC_SOBOL_XOR;
+    double pcg = app_bench_ns(q_pcg, NULL, n, seed, 5);
+    printf("\n%-36s %12s %10s %12s\n", "point source (D = 4)", "M coord/s", "ns/coord",
+           "x PCG32 time");
+    qmc_row("PCG32 uniform doubles", pcg, pcg);
+    qmc_row("Sobol by index", app_bench_ns(q_method, (void *)&sobol, n, seed, 5), pcg);
+    qmc_row("Sobol XOR (mc_sobol_xor)", app_bench_ns(q_method, (void *)&xor, n, seed, 5), pcg);
+    qmc_row("Sobol Owen (mc_sobol_owen)", app_bench_ns(q_method, (void *)&owen, n, seed, 5), pcg);
+    qmc_row("Sobol Owen (cursor)", app_bench_ns(q_cursor, (void *)&c_owen, n, seed, 5), pcg);
+    qmc_row("Sobol by index (mc_qmc_fill)", app_bench_ns(q_fill, (void *)&c_sobol, n, seed, 5),
+            pcg);
+    qmc_row("Sobol XOR (mc_qmc_fill)", app_bench_ns(q_fill, (void *)&c_xor, n, seed, 5), pcg);
+    qmc_row("Sobol Owen (mc_qmc_fill)", app_bench_ns(q_fill, (void *)&c_owen, n, seed, 5), pcg);
+    qmc_row("PCG32 (cursor, stream per point)", app_bench_ns(q_cursor, (void *)&c_rand, n, seed, 5),
+            pcg);
+    qmc_row("Halton permuted (mc_halton_permuted)",
+            app_bench_ns(q_method, (void *)&halton, n / 16u, seed, 5), pcg);
+    qmc_row("Halton permuted (cursor)", app_bench_ns(q_cursor, (void *)&c_halton, n / 16u, seed, 5),
+            pcg);
+    qmc_row("padded Owen Sobol pairs, 64 spp", app_bench_ns(q_padded, NULL, n, seed, 5), pcg);
+}
+
 static void row(const char *what, int threads, double rate, double scalar)
 {
     printf("%-30s %7d %12.1f %10.1fx %10.1fx\n", what, threads, rate / 1e6, rate / scalar,
@@ -72,7 +202,8 @@ static void row(const char *what, int threads, double rate, double scalar)
 int main(int argc, char **argv)
 {
     app_parse("bench_mc",
-              "bench_mc\n  throughput of the RNG and the pi kernels, 1 and 2 threads (see make bench)",
+              "bench_mc\n  throughput of the RNG, the pi kernels (1 and 2 threads) and the QMC\n"
+              "  point sources (see make bench)",
               argc, argv, NULL, 0, NULL, 0);
     uint64_t n = UINT64_C(1) << 30;
     double uni = rate_uniform(UINT64_C(1) << 28);
@@ -96,5 +227,6 @@ int main(int argc, char **argv)
            e1.value, e1.std_error, same_plain ? "identical" : "DIFFER");
     printf("pi stratified n=%llu: %.10f +- %.2e (1 and 2 threads %s)\n",
            (unsigned long long)(n / 4), s1.value, s1.std_error, same_strat ? "identical" : "DIFFER");
+    qmc_table();
     return same_plain && same_strat ? 0 : 1;
 }

@@ -89,6 +89,11 @@ static void put2(double u[2], vec2 v)
     {                                                                                              \
         (void)s;                                                                                   \
         return smp_##stem##_pdf(x[0]);                                                             \
+    }                                                                                              \
+    static void tag##_invert(const cat_state *s, const double x[3], double u[2])                   \
+    {                                                                                              \
+        (void)s;                                                                                   \
+        u[0] = smp_##stem##_invert(x[0]), u[1] = 0.0;                                              \
     }
 
 PLANE_TRIO(square, unit_square)
@@ -126,6 +131,68 @@ DIR_TRIO_ARG(cone, uniform_cone, s->p.cos_max)
 REAL_TRIO(linear, linear)
 REAL_TRIO(quadratic, quadratic)
 REAL_TRIO(sine, sine)
+REAL_TRIO(log_ends, log_ends)
+
+/* Points of a parallelogram and of a sphere's surface in space. */
+static void para_sample(const cat_state *s, const double *u, double x[3])
+{
+    put3(x, smp_parallelogram_sample(u[0], u[1], s->p.corner, s->p.u, s->p.v));
+}
+
+static double para_pdf(const cat_state *s, const double x[3])
+{
+    return smp_parallelogram_pdf(get3(x), s->p.corner, s->p.u, s->p.v);
+}
+
+static void para_invert(const cat_state *s, const double x[3], double u[2])
+{
+    put2(u, smp_parallelogram_invert(get3(x), s->p.corner, s->p.u, s->p.v));
+}
+
+/* In the plane within 1e-12 of the shape's size (the round-off of the
+ * sample's additions) and inside the edges within 1e-12. */
+static bool para_support(const cat_state *s, const double x[3])
+{
+    const cat_values *p = &s->p;
+    double ab[2];
+    cat_chart_point(s, x, ab);
+    vec3 n = vec3_normalize(vec3_cross(p->u, p->v));
+    double off = fabs(vec3_dot(vec3_sub(get3(x), p->corner), n));
+    double tol = 1e-12 * (vec3_length(p->u) + vec3_length(p->v));
+    return off <= tol && ab[0] >= -1e-12 && ab[0] <= 1.0 + 1e-12 && ab[1] >= -1e-12 &&
+           ab[1] <= 1.0 + 1e-12;
+}
+
+static bool para_prepare(cat_state *s, char *err, size_t errlen)
+{
+    if (!(vec3_length_sq(vec3_cross(s->p.u, s->p.v)) > 0.0)) {
+        snprintf(err, errlen, "%s: u and v are parallel", s->row->name);
+        return false;
+    }
+    return true;
+}
+
+static void ball_sample(const cat_state *s, const double *u, double x[3])
+{
+    put3(x, smp_sphere_surface_sample(u[0], u[1], s->p.center, s->p.radius));
+}
+
+static double ball_pdf(const cat_state *s, const double x[3])
+{
+    return smp_sphere_surface_pdf(get3(x), s->p.center, s->p.radius);
+}
+
+static void ball_invert(const cat_state *s, const double x[3], double u[2])
+{
+    put2(u, smp_sphere_surface_invert(get3(x), s->p.center, s->p.radius));
+}
+
+/* On the sphere within 1e-12 of its radius (round-off). */
+static bool ball_support(const cat_state *s, const double x[3])
+{
+    double r = s->p.radius;
+    return fabs(vec3_length(vec3_sub(get3(x), s->p.center)) - r) <= 1e-12 * r;
+}
 
 /* --- rows whose parameters build something --------------------------- */
 
@@ -158,7 +225,7 @@ static size_t index_of(const cat_state *s, const double x[3])
 
 static void discrete_sample(const cat_state *s, const double *u, double x[3])
 {
-    x[0] = (double)smp_discrete_cdf_sample(&s->cdf, u[0], NULL);
+    x[0] = (double)smp_discrete_cdf_sample(&s->cdf, u[0], &x[1]);
 }
 
 static double discrete_pdf(const cat_state *s, const double x[3])
@@ -169,7 +236,7 @@ static double discrete_pdf(const cat_state *s, const double x[3])
 
 static void alias_sample(const cat_state *s, const double *u, double x[3])
 {
-    x[0] = (double)smp_alias_sample(&s->alias, u[0], NULL);
+    x[0] = (double)smp_alias_sample(&s->alias, u[0], &x[1]);
 }
 
 static double alias_pdf(const cat_state *s, const double x[3])
@@ -178,7 +245,31 @@ static double alias_pdf(const cat_state *s, const double x[3])
     return k == SIZE_MAX ? 0.0 : smp_alias_pmf(&s->alias, k);
 }
 
-/* The light pdfs look from the origin; the mixture's cosine is about +z. */
+/* The pdf objects look from the origin. */
+static bool uniform_prepare(cat_state *s, char *err, size_t errlen)
+{
+    (void)err, (void)errlen;
+    s->uniform = pdf_uniform_sphere();
+    s->object = &s->uniform;
+    return true;
+}
+
+/* The cosine lobe about the unit vector along `normal`; its chart covers
+ * the whole sphere about that axis, so that normalization also weighs the
+ * lower half, where the density must vanish. */
+static bool cosine_prepare(cat_state *s, char *err, size_t errlen)
+{
+    vec3 n = s->p.normal;
+    if (!(vec3_length_sq(n) > 0.0)) {
+        snprintf(err, errlen, "%s: the normal must not be the zero vector", s->row->name);
+        return false;
+    }
+    s->cosine = pdf_cosine(vec3_normalize(n));
+    s->dir_chart = pdf_chart_spherical(s->cosine.as.cosine.frame.n, -1.0);
+    s->object = &s->cosine;
+    return true;
+}
+
 static bool quad_prepare(cat_state *s, char *err, size_t errlen)
 {
     const cat_values *p = &s->p;
@@ -196,9 +287,8 @@ static bool quad_prepare(cat_state *s, char *err, size_t errlen)
 
 static bool mixture_prepare(cat_state *s, char *err, size_t errlen)
 {
-    if (!quad_prepare(s, err, errlen))
+    if (!cosine_prepare(s, err, errlen) || !quad_prepare(s, err, errlen))
         return false;
-    s->cosine = pdf_cosine(vec3_make(0.0, 0.0, 1.0));
     s->parts[0] = &s->cosine, s->parts[1] = &s->quad;
     s->mix_weights[0] = s->p.w, s->mix_weights[1] = 1.0 - s->p.w;
     s->mixture = pdf_mixture(s->parts, s->mix_weights, 2);
@@ -206,7 +296,8 @@ static bool mixture_prepare(cat_state *s, char *err, size_t errlen)
     return true;
 }
 
-static bool sphere_light_prepare(cat_state *s, char *err, size_t errlen)
+/* The sphere seen from the origin, into s->sphere. */
+static bool sphere_prepare(cat_state *s, char *err, size_t errlen)
 {
     const cat_values *p = &s->p;
     s->sphere = pdf_toward_sphere(vec3_make(0.0, 0.0, 0.0), p->center, p->radius);
@@ -216,15 +307,60 @@ static bool sphere_light_prepare(cat_state *s, char *err, size_t errlen)
      * chart's width 1 - cos theta_max. */
     if (!pdf_valid(&s->sphere) || !(s->sphere.as.sphere.one_minus_cos >= 1e-9)) {
         snprintf(err, errlen,
-                 "sphere-light: the sphere is too small to histogram in (cos theta, phi) "
-                 "(needs R/d >= 4.5e-5)");
+                 "%s: the sphere is too small to histogram in (cos theta, phi) "
+                 "(needs R/d >= 4.5e-5)",
+                 s->row->name);
         return false;
     }
+    return true;
+}
+
+static bool sphere_light_prepare(cat_state *s, char *err, size_t errlen)
+{
+    if (!sphere_prepare(s, err, errlen))
+        return false;
     /* The cone's chart starts at its rim: its edge is a cell edge. */
+    const cat_values *p = &s->p;
     s->dir_chart = pdf_chart_spherical(
         vec3_length_sq(p->center) > 0.0 ? p->center : vec3_make(0.0, 0.0, 1.0),
         s->sphere.as.sphere.cos_theta_max);
     s->object = &s->sphere;
+    return true;
+}
+
+/* The angle between the unit vectors a and b, accurate near 0 and pi. */
+static double angle_between(vec3 a, vec3 b)
+{
+    return atan2(vec3_length(vec3_cross(a, b)), vec3_dot(a, b));
+}
+
+/* The list of the parallelogram and the sphere, in the chart that sets the
+ * light's (s, t) beside the sphere's cone. That chart needs the two apart
+ * as seen from the origin: the sphere's cone must miss the cone about the
+ * light's centre that holds its four corners (a sufficient condition). */
+static bool list_prepare(cat_state *s, char *err, size_t errlen)
+{
+    if (!quad_prepare(s, err, errlen) || !sphere_prepare(s, err, errlen))
+        return false;
+    const cat_values *p = &s->p;
+    vec3 mid = vec3_normalize(vec3_madd(vec3_madd(p->corner, p->u, 0.5), p->v, 0.5));
+    double quad_half = 0.0;
+    for (int k = 0; k < 4; k++) {
+        vec3 x = vec3_madd(vec3_madd(p->corner, p->u, (double)(k & 1)), p->v, (double)(k >> 1));
+        quad_half = fmax(quad_half, angle_between(mid, vec3_normalize(x)));
+    }
+    double cone_half = acos(s->sphere.as.sphere.cos_theta_max);
+    if (s->sphere.as.sphere.one_minus_cos >= 2.0 ||
+        !(angle_between(mid, s->sphere.as.sphere.frame.n) > quad_half + cone_half)) {
+        snprintf(err, errlen, "%s: the light and the sphere overlap as seen from the origin",
+                 s->row->name);
+        return false;
+    }
+    s->dir_chart = pdf_chart_quad_and_cap(vec3_make(0.0, 0.0, 0.0), p->corner, p->u, p->v,
+                                          p->center, p->radius);
+    s->parts[0] = &s->quad, s->parts[1] = &s->sphere;
+    s->list = pdf_list(s->parts, 2);
+    s->object = &s->list;
     return true;
 }
 
@@ -247,20 +383,26 @@ static double object_pdf(const cat_state *s, const double x[3])
 #define WEIGHTS {"weights", CAT_LIST, offsetof(cat_values, weights), "1,2,3,4,5,6,7,8", 0, 0, false, false}
 #define QUAD_PARAMS                                                                                \
     VECTOR("corner", corner, "-0.5,-0.5,1"), VECTOR("u", u, "1,0,0"), VECTOR("v", v, "0,1,0")
+#define RADIUS NUMBER("radius", radius, "1", 0.0, INF, true, false)
+#define NORMAL VECTOR("normal", normal, "0,0,1")
 
 /* Rows with two uniforms and a trio, by the point they give. */
 #define PLANE(nm, dom, ch, tag)                                                                    \
     .name = nm, .domain = dom, .measure = "area", .family = "planar", .point = CAT_PLANAR,          \
     .uniforms = 2, .sample_u = tag##_sample, .pdf = tag##_pdf, .invert = tag##_invert,             \
     .chart = ch, .hi = 1.0
+#define SURFACE(nm, dom, ch, tag)                                                                  \
+    .name = nm, .domain = dom, .measure = "area", .family = "planar", .point = CAT_POINT,           \
+    .uniforms = 2, .sample_u = tag##_sample, .pdf = tag##_pdf, .invert = tag##_invert,             \
+    .in_support = tag##_support, .chart = ch
 #define DIR(nm, dom, fam, lo_cos, n_u, smp, density, inv)                                          \
     .name = nm, .domain = dom, .measure = "solid-angle", .family = fam,                            \
     .point = CAT_DIRECTION, .uniforms = n_u, .sample_u = smp, .pdf = density, .invert = inv,         \
     .chart = CAT_CHART_DIRECTION, .lo = lo_cos, .hi = 1.0
 #define REAL(nm, dom, upper, tag)                                                                  \
     .name = nm, .domain = dom, .measure = "length", .family = "warp1d", .point = CAT_REAL,         \
-    .uniforms = 1, .sample_u = tag##_sample, .pdf = tag##_pdf, .chart = CAT_CHART_LINE,            \
-    .hi = upper
+    .uniforms = 1, .sample_u = tag##_sample, .pdf = tag##_pdf, .invert = tag##_invert,             \
+    .chart = CAT_CHART_LINE, .hi = upper
 #define INDEX(nm, tag)                                                                             \
     .name = nm, .domain = "{0..k-1}", .measure = "counting", .family = "discrete",                 \
     .point = CAT_INDEX, .params = {WEIGHTS}, .prepare = tables_prepare, .uniforms = 1,             \
@@ -268,9 +410,17 @@ static double object_pdf(const cat_state *s, const double x[3])
 #define OBJECT(nm, prep)                                                                           \
     .name = nm, .domain = "sphere(from-origin)", .measure = "solid-angle", .family = "pdf",        \
     .point = CAT_DIRECTION, .prepare = prep, .sample_rng = object_sample, .pdf = object_pdf,       \
-    .chart = CAT_CHART_DIRECTION
+    .chart = CAT_CHART_DIRECTION, .lo = -1.0, .hi = 1.0
 /* A test case: name, parameters, cells, seed group and position. */
 #define CASE(nm, prm, nx, ny, width, group, pos) {nm, prm, {nx, ny}, width, group, pos}
+
+/* The pdf objects' test geometry: a tilted parallelogram light and
+ * spheres far, near, around and beside the origin, in "high-entropy"
+ * coordinates so that no missing factor or swapped axis can hide. */
+#define TILTED_QUAD "corner=-0.7,-0.4,1.2 u=1,0.1,0.35 v=-0.15,0.8,0.45"
+#define TILTED_NORMAL "normal=0.36,-0.48,0.8"
+#define SIDE_SPHERE "center=3,-1,-0.5 radius=0.8"
+#define WEIGHTS8 "weights=1.5,4,2.385,0.25,6,3.1,0.75,2"
 
 /* BEGIN SNIPPET catalog_rows */
 static const cat_row rows[] = {
@@ -285,6 +435,15 @@ static const cat_row rows[] = {
      * quadrature of the cut cells cheap. */
     {PLANE("triangle", "triangle(0,0)(1,0)(0,1)", CAT_CHART_XY, triangle),
      .in_support = triangle_support, .cases = {CASE("triangle", NULL, 40, 40, 0.0, 6001, 3)}},
+    {SURFACE("parallelogram", "parallelogram", CAT_CHART_PARALLELOGRAM, para),
+     .params = {VECTOR("corner", corner, "0,0,0"), VECTOR("u", u, "1,0,0"),
+                VECTOR("v", v, "0,1,0")},
+     .prepare = para_prepare,
+     .cases = {CASE("parallelogram", "corner=0.3,-1.2,2.385 u=1.7,0.2,-0.4 v=-0.3,0.9,0.6", 50,
+                    50, 0.0, 6001, 4)}},
+    {SURFACE("sphere-surface", "sphere-surface", CAT_CHART_SURFACE, ball),
+     .params = {VECTOR("center", center, "0,0,0"), RADIUS},
+     .cases = {CASE("sphere-surface", "center=0.5,-1,2 radius=1.7", 0, 0, 0.0, 6001, 5)}},
     {DIR("sphere-inverse", "sphere", "sphere", -1.0, 2, sphere_sample, sphere_pdf, sphere_invert),
      .cases = {CASE("sphere-inverse", NULL, 0, 0, 0.0, 4001, 0)}},
     {DIR("sphere-gaussian", "sphere", "sphere", -1.0, 4, gaussian_sample, sphere_pdf, NULL),
@@ -306,7 +465,7 @@ static const cat_row rows[] = {
      .rim_zero = true, .cases = {CASE("cosine-acos", NULL, 0, 0, 0.0, 4003, 2)}},
     {DIR("theta-phi", "hemisphere(+z)", "hemisphere", 0.0, 2, theta_phi_sample, theta_phi_pdf,
          theta_phi_invert),
-     .cases = {CASE("theta-phi", NULL, 0, 0, 0.0, 4002, 2)}},
+     .pole_infinite = true, .cases = {CASE("theta-phi", NULL, 0, 0, 0.0, 4002, 2)}},
     /* Lobe widths of the tests' charts: cos^n falls to 1/e at
      * theta ~ sqrt(2/n); GGX's D is concentrated within theta ~ alpha. */
     {DIR("phong", "hemisphere(+z)", "lobes", 0.0, 2, phong_sample, phong_pdf, phong_invert),
@@ -324,17 +483,40 @@ static const cat_row rows[] = {
      .cases = {CASE("cone-0.8", "cos_max=0.8", 0, 0, 0.0, 5002, 0),
                CASE("cone-0.2", "cos_max=0.2", 0, 0, 0.0, 5002, 1),
                CASE("cone--0.5", "cos_max=-0.5", 0, 0, 0.0, 5002, 2)}},
-    {REAL("linear", "[0,2]", 2.0, linear)},
-    {REAL("quadratic", "[0,2]", 2.0, quadratic)},
-    {REAL("sine", "[0,pi]", MC_PI, sine)},
-    {INDEX("discrete", discrete)},
-    {INDEX("alias", alias)},
-    {OBJECT("quad-light", quad_prepare), .params = {QUAD_PARAMS}},
+    /* 1D: 64 equal cells. */
+    {REAL("linear", "[0,2]", 2.0, linear), .cases = {CASE("linear", NULL, 64, 1, 0.0, 4101, 0)}},
+    {REAL("quadratic", "[0,2]", 2.0, quadratic),
+     .cases = {CASE("quadratic", NULL, 64, 1, 0.0, 4101, 1)}},
+    {REAL("sine", "[0,pi]", MC_PI, sine), .cases = {CASE("sine", NULL, 64, 1, 0.0, 4101, 2)}},
+    {REAL("log-ends", "[0,pi]", MC_PI, log_ends),
+     .cases = {CASE("log-ends", NULL, 64, 1, 0.0, 4101, 3)}},
+    {INDEX("discrete", discrete), .cases = {CASE("discrete-8", WEIGHTS8, 0, 0, 0.0, 5101, 0)}},
+    {INDEX("alias", alias), .cases = {CASE("alias-8", WEIGHTS8, 0, 0, 0.0, 5101, 1)}},
+    /* The pdf objects: (cos theta, phi) charts in 40 x 80 cells, the
+     * light-plane chart in its 120 x 90 (30 cells per unit, so that the
+     * light's edges are cell edges), the quad-and-cap chart in 60 x 30. */
+    {OBJECT("quad-light", quad_prepare), .params = {QUAD_PARAMS},
+     .cases = {CASE("quad-tilted", TILTED_QUAD, 0, 0, 0.0, 3303, 4),
+               CASE("quad-below", "corner=-0.5,2,-0.1 u=0,0,0.5 v=0.7,0,0", 0, 0, 0.0, 3303, 5)}},
     {OBJECT("sphere-light", sphere_light_prepare),
-     .params = {VECTOR("center", center, "0,0,2"),
-                NUMBER("radius", radius, "1", 0.0, INF, true, false)}},
+     .params = {VECTOR("center", center, "0,0,2"), RADIUS},
+     .cases = {CASE("sphere-far", "center=3,4,12 radius=1", 40, 80, 0.0, 3303, 6),
+               CASE("sphere-near", "center=0.4,-1.1,1.5 radius=1.5", 40, 80, 0.0, 3303, 7),
+               CASE("sphere-inside", "center=0.2,0.3,-0.3 radius=2", 40, 80, 0.0, 3303, 8),
+               CASE("sphere-side", SIDE_SPHERE, 40, 80, 0.0, 3303, 12)}},
     {OBJECT("mixture", mixture_prepare),
-     .params = {NUMBER("w", w, "0.5", 0.0, 1.0, false, false), QUAD_PARAMS}},
+     .params = {NUMBER("w", w, "0.5", 0.0, 1.0, false, false), QUAD_PARAMS, NORMAL},
+     .cases = {CASE("mixture-0.5", "w=0.5 " TILTED_NORMAL " " TILTED_QUAD, 0, 0, 0.0, 3303, 9),
+               CASE("mixture-0.2", "w=0.2 " TILTED_NORMAL " " TILTED_QUAD, 0, 0, 0.0, 3303, 10)}},
+    {OBJECT("uniform-pdf", uniform_prepare),
+     .cases = {CASE("uniform", NULL, 40, 80, 0.0, 3303, 0)}},
+    {OBJECT("cosine-pdf", cosine_prepare), .params = {NORMAL},
+     .cases = {CASE("cosine-tilted", TILTED_NORMAL, 40, 80, 0.0, 3303, 1),
+               CASE("cosine-near-minus-z", "normal=1e-7,-2e-8,-1", 40, 80, 0.0, 3303, 2),
+               CASE("cosine-x", "normal=1,0,0", 40, 80, 0.0, 3303, 3)}},
+    {OBJECT("light-list", list_prepare),
+     .params = {QUAD_PARAMS, VECTOR("center", center, "0,3,0.5"), RADIUS},
+     .cases = {CASE("list-quad-sphere", TILTED_QUAD " " SIDE_SPHERE, 60, 30, 0.0, 3303, 11)}},
 };
 /* END SNIPPET catalog_rows */
 

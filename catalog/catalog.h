@@ -7,9 +7,11 @@
  * to sample it (from uniforms, or from a generator), its density, its
  * inverse and support where it has them, the chart in which its goodness
  * of fit is histogrammed, and the named parameter sets the test suite and
- * the benchmark run. `warp`, `sphere_plot`, `bench_samplers` and the
- * sampler tests all iterate this one table, so adding a sampler is adding
- * a row. Serves chapters 2-3 and 5-10 (every sampler and density of the
+ * the benchmark run. `warp`, `sphere_plot`, `plotdata_chi2`,
+ * `bench_samplers`, the chapter programs that estimate integrals over
+ * directions (cat_integrate) and the tests of the samplers and of the pdf
+ * objects all iterate this one table, so adding a sampler is adding a row.
+ * Serves chapters 2-3 and 5-10 (every sampler and density of the
  * book); the layer sits above pdf/ and below the programs.
  *
  * Nothing here prints or allocates; errors come back as messages.
@@ -24,18 +26,20 @@
 #include "mc/gof.h"
 #include "mc/rng.h"
 #include "pdf/chart.h"
+#include "pdf/experiments.h"
 #include "pdf/pdf.h"
 #include "samplers/discrete.h"
 
 /* At most this many weights for `discrete` and `alias`. */
 #define CAT_MAX_WEIGHTS 256
 /* At most this many parameters per row and named cases per row. */
-#define CAT_MAX_PARAMS 4
+#define CAT_MAX_PARAMS 5
 #define CAT_MAX_CASES 5
 
-/* How a point is written and read: a direction as x y z, a planar point as
- * x y, a real as x, a discrete outcome as its index. */
-typedef enum cat_point { CAT_DIRECTION, CAT_PLANAR, CAT_REAL, CAT_INDEX } cat_point;
+/* How a point is written and read: a direction as x y z, a point of a
+ * surface in space as x y z, a planar point as x y, a real as x, a
+ * discrete outcome as its index. */
+typedef enum cat_point { CAT_DIRECTION, CAT_POINT, CAT_PLANAR, CAT_REAL, CAT_INDEX } cat_point;
 
 /* Every parameter any row takes; a row accepts only its own. */
 typedef struct cat_values {
@@ -43,9 +47,10 @@ typedef struct cat_values {
     double alpha;      /* ggx roughness */
     double cos_max;    /* cone */
     double w;          /* mixture: weight of the cosine pdf */
-    vec3 corner, u, v; /* quad-light and mixture: the parallelogram */
-    vec3 center;       /* sphere-light */
-    double radius;     /* sphere-light */
+    vec3 normal;       /* cosine-pdf and mixture: the cosine lobe's axis (any length > 0) */
+    vec3 corner, u, v; /* parallelogram, quad-light, light-list, mixture: the parallelogram */
+    vec3 center;       /* sphere-surface, sphere-light, light-list: the sphere */
+    double radius;
     double weights[CAT_MAX_WEIGHTS];
     size_t n_weights; /* discrete and alias */
 } cat_values;
@@ -64,8 +69,11 @@ typedef struct cat_param {
 
 /* How goodness of fit histograms a row's points: x on [lo, hi]; an index
  * k as k + 1/2 on [0, count]; a planar point as (x, y) on [0, 1]^2; a disc
- * point as (r^2, phi), where d area = d(r^2) d phi / 2; a direction in a
- * chart of pdf/chart.h (the state's); or, for a lobe about +z, as
+ * point as (r^2, phi), where d area = d(r^2) d phi / 2; a point of the
+ * parallelogram corner + a u + b v as (a, b) on [0, 1]^2, where
+ * d area = |u x v| da db; a point of a sphere's surface as (cos theta, phi)
+ * about its centre, where d area = r^2 d(cos theta) d phi; a direction in
+ * a chart of pdf/chart.h (the state's); or, for a lobe about +z, as
  * x = theta / (theta + s) and phi over [0, x(pi/2)] x [0, 2 pi], which
  * spreads a lobe of width about s over many cells. */
 typedef enum cat_chart_kind {
@@ -73,6 +81,8 @@ typedef enum cat_chart_kind {
     CAT_CHART_INDEX,
     CAT_CHART_XY,
     CAT_CHART_DISC,
+    CAT_CHART_PARALLELOGRAM,
+    CAT_CHART_SURFACE,
     CAT_CHART_DIRECTION,
     CAT_CHART_LOBE
 } cat_chart_kind;
@@ -114,8 +124,9 @@ typedef struct cat_row {
     /* Whether x lies in the support, or NULL for the chart's rectangle
      * (a direction: cos theta >= its lower end). */
     bool (*in_support)(const cat_state *s, const double x[3]);
-    /* The density may be exactly 0 on the horizon z = 0 (cosine lobes). */
-    bool rim_zero;
+    /* The density may be exactly 0 on the horizon z = 0 (cosine lobes), and
+     * infinite on the polar axis (uniform in theta, 1 / sin theta). */
+    bool rim_zero, pole_infinite;
     cat_chart_kind chart;
     double lo, hi; /* LINE: the interval; DIRECTION: cos theta from lo about +z by default */
     cat_case cases[CAT_MAX_CASES + 1];
@@ -126,9 +137,9 @@ typedef struct cat_row {
 struct cat_state {
     const cat_row *row;
     cat_values p;
-    pdf cosine, quad, sphere, mixture;
+    pdf uniform, cosine, quad, sphere, mixture, list;
     const pdf *object; /* the pdf object a pdf row samples */
-    const pdf *parts[2];
+    const pdf *parts[2]; /* the mixture's components, or the list's items */
     double mix_weights[2];
     smp_discrete_cdf cdf;
     double cdf_storage[CAT_MAX_WEIGHTS];
@@ -148,7 +159,7 @@ const cat_row *cat_at(size_t i);
 const cat_row *cat_find(const char *name);
 const cat_case *cat_find_case(const char *name, const cat_row **row);
 
-/* The number of coordinates of a point: 3, 2, 1 or 1. */
+/* The number of coordinates of a point: 3, 3, 2, 1 or 1. */
 int cat_point_dims(const cat_row *r);
 
 /* "key=default ..." into buf, "-" for a row without parameters. */
@@ -167,16 +178,29 @@ bool cat_set_param(const cat_row *r, cat_values *p, const char *assignment, char
  * a message in err otherwise. */
 bool cat_prepare(const cat_row *r, const cat_values *p, cat_state *s, char *err, size_t errlen);
 
+/* The row called `name` with its defaults, prepared into *s. False with a
+ * message in err for an unknown name. */
+bool cat_prepare_named(const char *name, cat_state *s, char *err, size_t errlen);
+
 /* cat_defaults, the case's assignments and cat_prepare in one call. */
 bool cat_prepare_case(const cat_row *r, const cat_case *c, cat_state *s, char *err,
                       size_t errlen);
 
-/* One sample into x[0..dims) (x[dims..3) are set to 0). */
+/* One sample into x[0..dims) (x[dims..3) are set to 0, except that an
+ * index row leaves in x[1] the uniform in [0, 1) its table had left over,
+ * samplers/discrete.h). */
 void cat_sample(const cat_state *s, mc_rng *rng, double x[3]);
 
 /* The density at x[0..dims) with respect to the row's measure (for an
  * index, its probability). Directions must be unit length. */
 double cat_pdf(const cat_state *s, const double x[3]);
+
+/* The estimate of the integral of f over the directions of a direction
+ * row (per unit solid angle) from n >= 1 directions drawn from s: the mean
+ * of f(d) / cat_pdf(d), its variance per sample and its standard error.
+ * A direction of density 0 contributes 0 (unbiased only if f vanishes
+ * wherever the density does: the caller's contract). */
+mc_estimate cat_integrate(pdf_fn f, const cat_state *s, mc_rng *rng, uint64_t n);
 
 /* Uses the lobe chart of width `width` (> 0) for a direction row about +z. */
 void cat_use_lobe_chart(cat_state *s, double width);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "mc/constants.h"
+#include "mc/integrate.h"
 #include "samplers/spherical.h"
 
 const cat_row *cat_find(const char *name)
@@ -32,7 +33,7 @@ const cat_case *cat_find_case(const char *name, const cat_row **row)
 
 int cat_point_dims(const cat_row *r)
 {
-    return r->point == CAT_DIRECTION ? 3 : (r->point == CAT_PLANAR ? 2 : 1);
+    return r->point == CAT_DIRECTION || r->point == CAT_POINT ? 3 : (r->point == CAT_PLANAR ? 2 : 1);
 }
 
 void cat_param_defaults(const cat_row *r, char *buf, size_t size)
@@ -147,6 +148,18 @@ bool cat_prepare(const cat_row *r, const cat_values *v, cat_state *s, char *err,
     return r->prepare ? r->prepare(s, err, errlen) : true;
 }
 
+bool cat_prepare_named(const char *name, cat_state *s, char *err, size_t errlen)
+{
+    const cat_row *r = cat_find(name);
+    if (!r) {
+        snprintf(err, errlen, "no sampler '%s' in the catalog", name);
+        return false;
+    }
+    cat_values v;
+    cat_defaults(r, &v);
+    return cat_prepare(r, &v, s, err, errlen);
+}
+
 bool cat_prepare_case(const cat_row *r, const cat_case *c, cat_state *s, char *err,
                       size_t errlen)
 {
@@ -183,12 +196,57 @@ double cat_pdf(const cat_state *s, const double x[3])
     return s->row->pdf(s, x);
 }
 
+/* --- the estimator over directions -------------------------------------- */
+
+/* cat_integrate as an mc_is_sampler over a direction row's points:
+ * mc_integrate_sampler holds the one weighting loop. */
+typedef struct row_integrand {
+    pdf_fn f;
+    const cat_state *s;
+} row_integrand;
+
+/* BEGIN SNIPPET catalog_estimator */
+static double row_draw(mc_rng *rng, void *ctx, void *x)
+{
+    const row_integrand *c = ctx;
+    double *d = x;
+    cat_sample(c->s, rng, d);
+    return cat_pdf(c->s, d);
+}
+
+static double row_f(const void *x, void *ctx)
+{
+    const row_integrand *c = ctx;
+    const double *d = x;
+    return c->f.f(vec3_make(d[0], d[1], d[2]), c->f.ctx);
+}
+
+mc_estimate cat_integrate(pdf_fn f, const cat_state *s, mc_rng *rng, uint64_t n)
+{
+    row_integrand c = {f, s};
+    double d[3];
+    return mc_integrate_sampler((mc_is_sampler){row_draw, row_f, NULL, &c}, d, rng, n);
+}
+/* END SNIPPET catalog_estimator */
+
 /* --- charts -------------------------------------------------------------- */
 
 void cat_use_lobe_chart(cat_state *s, double width)
 {
     s->chart = CAT_CHART_LOBE;
     s->lobe_width = width;
+}
+
+/* The edge coordinates (a, b) of the point x of the parallelogram
+ * corner + a u + b v, by least squares in its plane (Cramer's rule on the
+ * Gram matrix of u and v). */
+static void parallelogram_coords(const cat_values *p, vec3 x, double out[2])
+{
+    vec3 d = vec3_sub(x, p->corner);
+    double uu = vec3_dot(p->u, p->u), uv = vec3_dot(p->u, p->v), vv = vec3_dot(p->v, p->v);
+    double du = vec3_dot(d, p->u), dv = vec3_dot(d, p->v), det = uu * vv - uv * uv;
+    out[0] = (du * vv - dv * uv) / det;
+    out[1] = (dv * uu - du * uv) / det;
 }
 
 /* The lobe chart's upper end: x(pi/2). */
@@ -213,6 +271,14 @@ void cat_chart_point(const cat_state *s, const double x[3], double out[2])
         out[0] = x[0] * x[0] + x[1] * x[1];
         out[1] = smp_spherical_phi(vec3_make(x[0], x[1], 0.0));
         return;
+    case CAT_CHART_PARALLELOGRAM:
+        parallelogram_coords(&s->p, d, out);
+        return;
+    case CAT_CHART_SURFACE: {
+        vec3 w = vec3_scale(vec3_sub(d, s->p.center), 1.0 / s->p.radius);
+        out[0] = w.z, out[1] = smp_spherical_phi(w);
+        return;
+    }
     case CAT_CHART_DIRECTION:
         pdf_chart_point(&s->dir_chart, d, out);
         return;
@@ -241,6 +307,20 @@ double cat_chart_density(const cat_state *s, const double c[2])
         /* d area = r dr d phi = d(r^2) d phi / 2. */
         double r = sqrt(c[0]), y[3] = {r * cos(c[1]), r * sin(c[1]), 0.0};
         return 0.5 * cat_pdf(s, y);
+    }
+    case CAT_CHART_PARALLELOGRAM: {
+        /* d area = |u x v| da db. */
+        const cat_values *p = &s->p;
+        vec3 x = vec3_madd(vec3_madd(p->corner, p->u, c[0]), p->v, c[1]);
+        double y[3] = {x.x, x.y, x.z};
+        return cat_pdf(s, y) * vec3_length(vec3_cross(p->u, p->v));
+    }
+    case CAT_CHART_SURFACE: {
+        /* d area = r^2 d omega = r^2 d(cos theta) d phi. */
+        const cat_values *p = &s->p;
+        vec3 x = vec3_madd(p->center, smp_spherical_direction(c[0], c[1]), p->radius);
+        double y[3] = {x.x, x.y, x.z};
+        return cat_pdf(s, y) * p->radius * p->radius;
     }
     case CAT_CHART_DIRECTION: {
         double jac;
@@ -289,9 +369,13 @@ mc_gof_spec cat_gof_spec(const cat_state *s, const int cells[2])
         spec.dims = 1, spec.hi[0] = (double)s->p.n_weights, spec.cells[0] = (int)s->p.n_weights;
         break;
     case CAT_CHART_XY:
+    case CAT_CHART_PARALLELOGRAM:
         break;
     case CAT_CHART_DISC:
         spec.hi[1] = MC_2PI;
+        break;
+    case CAT_CHART_SURFACE:
+        spec.lo[0] = -1.0, spec.hi[1] = MC_2PI;
         break;
     case CAT_CHART_DIRECTION:
         pdf_chart_rect(&s->dir_chart, spec.lo, spec.hi);

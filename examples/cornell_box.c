@@ -97,7 +97,7 @@ static options parse(int argc, char **argv)
     if (rt_strategy_splats(ps.strategy) && o.depth > RT_BDPT_MAX_DEPTH)
         app_fail(prog, "--max-depth %d: %s takes at most %d", o.depth, o.strategy, RT_BDPT_MAX_DEPTH);
     if (strcmp(o.sampler, "sobol") == 0 && o.spp > UINT32_MAX)
-        app_fail(prog, "--spp %llu: the sobol sampler takes at most 2^32 samples per pixel",
+        app_fail(prog, "--spp %llu: the sobol sampler takes fewer than 2^32 samples per pixel",
                  (unsigned long long)o.spp);
     return o;
 }

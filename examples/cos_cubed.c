@@ -11,10 +11,9 @@
  * Build and run:  make all && build/bin/cos_cubed
  *                 build/bin/cos_cubed --method cosine --samples 1e7 --csv
  */
+#include "catalog/catalog.h"
 #include "examples/common/cli.h"
 #include "mc/constants.h"
-#include "pdf/experiments.h"
-#include "samplers/hemisphere.h"
 
 static const char *const methods[] = {"uniform", "cosine", "all", NULL};
 static const char *const extra_cols[] = {"variance"};
@@ -44,15 +43,18 @@ int main(int argc, char **argv)
     app_announce_samples("cos_cubed", n, 8.9e-08);
 
     /* BEGIN SNIPPET cos_cubed_methods */
-    const pdf_warp warps[2] = {{smp_uniform_hemisphere_sample, smp_uniform_hemisphere_pdf},
-                               {smp_cosine_hemisphere_sample, smp_cosine_hemisphere_pdf}};
+    static const char *const rows[2] = {"hemisphere", "cosine"}; /* the catalog's */
     app_table t = {stdout, csv, extra_cols, 1, "cos_cubed"};
     app_table_begin(&t);
     for (int m = 0; m < 2; m++) {
         if (!app_selected(method, methods[m]))
             continue;
+        cat_state s;
+        char err[256];
+        if (!cat_prepare_named(rows[m], &s, err, sizeof err))
+            app_fail("cos_cubed", "%s", err);
         mc_rng rng = mc_rng_derive(seed, (uint64_t)m);
-        mc_estimate e = pdf_integrate_warp((pdf_fn){cos_cubed, NULL}, warps[m], &rng, n);
+        mc_estimate e = cat_integrate((pdf_fn){cos_cubed, NULL}, &s, &rng, n);
         app_table_row(&t, methods[m], e, MC_PI_2, &e.variance);
     }
     /* END SNIPPET cos_cubed_methods */

@@ -12,55 +12,49 @@
  *            pair and for a wrong one: directions uniform in (theta, phi)
  *            claimed to be uniform in solid angle (the missing sin theta).
  *            Correct: p-values uniform on [0, 1]. Wrong: piled up at 0.
- * Histogram, quadrature and pooling are mc/gof.h's, the same as in
- * `warp chi2` and in the test suite's harness.
+ * The samplers and densities are rows of the catalog (catalog/catalog.h),
+ * histogrammed in their chart; histogram, quadrature and pooling are
+ * mc/gof.h's, the same as in `warp chi2` and in the test suite's harness.
  * Build and run:  make all && build/bin/plotdata_chi2 pvalues --seeds 200
  */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "catalog/catalog.h"
 #include "examples/common/cli.h"
 #include "mc/gof.h"
-#include "samplers/hemisphere.h"
-#include "samplers/spherical.h"
 
 #define PROG "plotdata_chi2"
 
 /* BEGIN SNIPPET chi2_pairs */
+/* A sampler of the catalog and the density it claims: its own, or, for
+ * the wrong pair, another row's (per unit solid angle). */
 typedef struct pair {
     const char *name;
-    vec3 (*sample)(double u1, double u2);
-    double (*pdf)(vec3 w); /* the density the pair claims, per unit solid angle */
+    const char *sampler, *density; /* rows of the catalog */
 } pair;
 
 static const pair pairs[2] = {
-    {"correct", smp_cosine_hemisphere_sample, smp_cosine_hemisphere_pdf},
-    {"wrong", smp_theta_phi_sample, smp_uniform_hemisphere_pdf},
+    {"correct", "cosine", "cosine"},
+    {"wrong", "theta-phi", "hemisphere"},
 };
 /* END SNIPPET chi2_pairs */
 
-static void param_sample(mc_rng *rng, void *ctx, double out[2])
+/* The pair's experiment in its rows' (cos theta, phi) chart on
+ * [0, 1] x [0, 2 pi], where a density per unit solid angle is a plain
+ * density (d omega = d cos_theta d phi), cut into nc x np cells. *row and
+ * *s hold the sampler's row with the claimed density and its state. */
+static mc_gof_spec pair_spec(const pair *p, int nc, int np, cat_row *row, cat_state *s)
 {
-    const pair *p = ctx;
-    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-    vec3 w = p->sample(u1, u2);
-    out[0] = w.z, out[1] = smp_spherical_phi(w);
-}
-
-/* d omega = d cos_theta d phi: the density per unit solid angle is already
- * the density of the (cos theta, phi) rectangle. */
-static double param_pdf(const double x[2], void *ctx)
-{
-    const pair *p = ctx;
-    return p->pdf(smp_spherical_direction(x[0], x[1]));
-}
-
-/* The pair's experiment on [0, 1] x [0, 2 pi] cut into nc x np cells. */
-static mc_gof_spec pair_spec(const pair *p, int nc, int np)
-{
-    mc_gof_spec s = {2, {0.0, 0.0}, {1.0, MC_2PI}, {nc, np}, param_sample, param_pdf, (void *)p};
-    return s;
+    *row = *cat_find(p->sampler);
+    row->pdf = cat_find(p->density)->pdf;
+    cat_values v;
+    cat_defaults(row, &v);
+    char err[256];
+    if (!cat_prepare(row, &v, s, err, sizeof err))
+        app_fail(PROG, "%s", err);
+    return cat_gof_spec(s, (const int[2]){nc, np});
 }
 
 /* The observed counts of n samples from the stream of `seed`; returns the
@@ -103,8 +97,10 @@ int main(int argc, char **argv)
     seeds = seeds ? seeds : 200;
 
     static double obs[64 * 64], expct[64 * 64];
+    static cat_row rows[2];
+    static cat_state states[2]; /* large; the specs point into them */
     if (strcmp(cmd[0], "cells") == 0) {
-        mc_gof_spec s = pair_spec(&pairs[0], nc, np);
+        mc_gof_spec s = pair_spec(&pairs[0], nc, np, &rows[0], &states[0]);
         if (mc_gof_expected(&s, n, expct) != 0)
             app_fail(PROG, "out of memory");
         (void)observe(&s, n, seed, obs);
@@ -117,7 +113,7 @@ int main(int argc, char **argv)
          * before any output. */
         static double expected[2][64 * 64];
         for (int c = 0; c < 2; c++) {
-            mc_gof_spec s = pair_spec(&pairs[c], nc, np);
+            mc_gof_spec s = pair_spec(&pairs[c], nc, np, &rows[c], &states[c]);
             if (mc_gof_expected(&s, n, expected[c]) != 0)
                 app_fail(PROG, "out of memory");
             mc_chi2_result r0 =
@@ -128,7 +124,7 @@ int main(int argc, char **argv)
         }
         printf("case,seed,n,chi2,dof,p\n");
         for (int c = 0; c < 2; c++) {
-            mc_gof_spec s = pair_spec(&pairs[c], nc, np);
+            mc_gof_spec s = pair_spec(&pairs[c], nc, np, &rows[c], &states[c]);
             for (int k = 0; k < seeds; k++) {
                 uint64_t sd = seed + (uint64_t)k;
                 if (observe(&s, n, sd, obs) > 0.0)

@@ -13,9 +13,8 @@
  *                 build/bin/sphere_importance --samples 1e7 --csv
  */
 #include "examples/common/cli.h"
+#include "catalog/catalog.h"
 #include "mc/constants.h"
-#include "pdf/experiments.h"
-#include "samplers/sphere.h"
 
 static const char *const methods[] = {"inverse", "gaussian", "rejection", "all", NULL};
 static const char *const extra_cols[] = {"variance"};
@@ -26,26 +25,9 @@ static double cos_squared(vec3 d, void *ctx)
     return d.z * d.z;
 }
 
-/* BEGIN SNIPPET sphere_by_hand */
-/* The estimator written out, for the samplers that need more than two
- * uniforms (pdf_integrate_warp takes two). */
-static mc_estimate by_hand(int method, mc_rng *rng, uint64_t n)
-{
-    mc_welford w = mc_welford_init();
-    for (uint64_t i = 0; i < n; i++) {
-        vec3 d;
-        if (method == 1) {
-            double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-            double u3 = mc_rng_uniform(rng), u4 = mc_rng_uniform(rng);
-            d = smp_uniform_sphere_sample_gaussian(u1, u2, u3, u4);
-        } else {
-            d = smp_uniform_sphere_sample_rejection(rng);
-        }
-        mc_welford_add(&w, cos_squared(d, NULL) / smp_uniform_sphere_pdf(d));
-    }
-    return mc_welford_estimate(&w);
-}
-/* END SNIPPET sphere_by_hand */
+/* The catalog's row of each method (catalog/catalog.h). */
+static const char *const rows[] = {"sphere-inverse", "sphere-gaussian", "sphere-rejection"};
+
 
 int main(int argc, char **argv)
 {
@@ -71,13 +53,12 @@ int main(int argc, char **argv)
     for (int m = 0; m < 3; m++) {
         if (!app_selected(method, methods[m]))
             continue;
+        cat_state s;
+        char err[256];
+        if (!cat_prepare_named(rows[m], &s, err, sizeof err))
+            app_fail("sphere_importance", "%s", err);
         mc_rng rng = mc_rng_derive(seed, (uint64_t)m);
-        mc_estimate e =
-            m == 0
-                ? pdf_integrate_warp((pdf_fn){cos_squared, NULL},
-                                     (pdf_warp){smp_uniform_sphere_sample, smp_uniform_sphere_pdf},
-                                     &rng, n)
-                : by_hand(m, &rng, n);
+        mc_estimate e = cat_integrate((pdf_fn){cos_squared, NULL}, &s, &rng, n);
         app_table_row(&t, methods[m], e, exact, &e.variance);
     }
     /* END SNIPPET sphere_methods */

@@ -186,7 +186,7 @@ static void densities(const cat_state *s)
             (x[0] != floor(x[0]) || x[0] < 0.0 || x[0] >= (double)s->p.n_weights))
             app_fail(PROG, "stdin line %ld: '%g' is not an outcome index from 0 to %zu", lineno, x[0],
                      s->p.n_weights - 1);
-        if (dims == 3) { /* directions are normalized; (0, 0, 0) is none */
+        if (s->row->point == CAT_DIRECTION) { /* normalized; (0, 0, 0) is none */
             double len = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
             if (!(len > 0.0))
                 app_fail(PROG, "stdin line %ld: the zero vector is not a direction", lineno);

@@ -52,7 +52,8 @@ uint64_t mc_qmc_stream_seed(uint64_t seed, uint64_t stream)
     /* Both inputs pass through a full-avalanche mix, so neighbouring seeds
      * or streams give unrelated scrambles. The constants only keep (0, 0)
      * away from the fixed point mix64(0) = 0. */
-    return mix64(mix64(seed ^ UINT64_C(0x9e3779b97f4a7c15)) ^ (stream + UINT64_C(0x6a09e667f3bcc909)));
+    uint64_t h = mix64(seed ^ UINT64_C(0x9e3779b97f4a7c15));
+    return mix64(h ^ (stream + UINT64_C(0x6a09e667f3bcc909)));
 }
 
 /* The key of sub-index k (a dimension, or a padded pair's slot) under the
@@ -67,6 +68,7 @@ uint32_t mc_qmc_key(uint64_t seed, uint64_t stream, unsigned dim)
     return index_key(mc_qmc_stream_seed(seed, stream), dim);
 }
 
+/* BEGIN SNIPPET radical_inverse */
 /* Mirrors the base-b digits of i about the radix point. Digit j (j = 0 is
  * the lowest digit of i, which becomes the first after the point) is
  * replaced by a random permutation of {0..b-1} keyed by mix32(key + j
@@ -83,8 +85,16 @@ static double mirror_digits(uint64_t i, unsigned b, int permute, uint32_t key)
     uint32_t j = 0;
     for (int c = 0; c < 2; c++) {
         while ((i > 0 || (permute && bm[0] < resolution)) && bm[c] <= limit / b) {
-            uint32_t d = (uint32_t)(i % b);
-            i /= b;
+            /* 32-bit division where i allows: several times cheaper than
+             * 64-bit division on common CPUs, and this is the hot loop. */
+            uint32_t d;
+            if (i <= UINT32_MAX) {
+                d = (uint32_t)i % b;
+                i = (uint32_t)i / b;
+            } else {
+                d = (uint32_t)(i % b);
+                i /= b;
+            }
             if (permute)
                 d = mc_permutation_element(d, b, mix32(key + j * 0x9e3779b9u));
             rev[c] = rev[c] * b + d;
@@ -104,18 +114,26 @@ double mc_radical_inverse(uint64_t i, unsigned base)
     assert(base >= 2);
     return mirror_digits(i, base, 0, 0u);
 }
+/* END SNIPPET radical_inverse */
 
+/* BEGIN SNIPPET van_der_corput */
 uint32_t mc_van_der_corput_u32(uint32_t i)
 {
-    /* Reverse by swapping ever smaller halves: 16-bit halves, bytes,
-     * nibbles, pairs, bits. */
+    /* Reverse by swapping ever smaller halves: 16-bit halves and bytes
+     * (one byte swap instruction where the compiler has it), nibbles,
+     * pairs, bits. */
+#if defined(__GNUC__)
+    i = __builtin_bswap32(i);
+#else
     i = (i << 16) | (i >> 16);
     i = ((i & 0x00ff00ffu) << 8) | ((i >> 8) & 0x00ff00ffu);
+#endif
     i = ((i & 0x0f0f0f0fu) << 4) | ((i >> 4) & 0x0f0f0f0fu);
     i = ((i & 0x33333333u) << 2) | ((i >> 2) & 0x33333333u);
     i = ((i & 0x55555555u) << 1) | ((i >> 1) & 0x55555555u);
     return i;
 }
+/* END SNIPPET van_der_corput */
 
 /* i / n, which for n beyond 2^53 can round up to 1: kept in [0, 1). */
 static double fraction(uint64_t i, uint64_t n)
@@ -138,6 +156,7 @@ void mc_hammersley3(uint64_t i, uint64_t n, double x[3])
     x[2] = mc_radical_inverse(i, 3u);
 }
 
+/* BEGIN SNIPPET halton */
 double mc_halton(uint64_t i, unsigned dim)
 {
     return mirror_digits(i, mc_qmc_prime(dim), 0, 0u);
@@ -147,19 +166,38 @@ double mc_halton_permuted(uint64_t i, unsigned dim, uint64_t seed, uint64_t stre
 {
     return mirror_digits(i, mc_qmc_prime(dim), 1, mc_qmc_key(seed, stream, dim));
 }
+/* END SNIPPET halton */
 
+/* The index of the lowest set bit of i != 0. */
+static unsigned lowest_bit(uint32_t i)
+{
+#if defined(__GNUC__)
+    return (unsigned)__builtin_ctz(i);
+#else
+    unsigned k = 0;
+    for (; (i & 1u) == 0u; i >>= 1)
+        k++;
+    return k;
+#endif
+}
+
+/* BEGIN SNIPPET sobol_u32 */
 uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
 {
     /* Point i is the generator matrix times the bits of i over GF(2): the
-     * XOR of the direction numbers v_k of the bits k set in i. */
+     * XOR of the direction numbers v_k of the bits k set in i, visited
+     * lowest first (one step per set bit: half the cost of a loop over all
+     * bits up to the highest). */
     assert(dim < MC_SOBOL_MAX_DIM);
     const uint32_t *v = mc_sobol_matrix[dim];
     uint32_t x = 0u;
-    for (unsigned k = 0; i != 0u; i >>= 1, k++)
-        x ^= v[k] & (0u - (i & 1u));
+    for (; i != 0u; i &= i - 1u)
+        x ^= v[lowest_bit(i)];
     return x;
 }
+/* END SNIPPET sobol_u32 */
 
+/* BEGIN SNIPPET owen_scramble */
 /* Owen's nested uniform scramble flips each bit by a random function of the
  * bits above it. Reversed, "above" becomes "below", and every step of
  * Laine and Karras's permutation (2011, "Stratified sampling for stochastic
@@ -168,8 +206,10 @@ uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
  * Burley (2020, "Practical Hash-based Owen Scrambling", JCGT 9(4)) uses this
  * to scramble by hashing; the constants are Vegdahl's improved ones (2021,
  * "Building a better LK hash", psychopath.io). The lowest reversed bit (the
- * first digit) is flipped by key bit 0, so a uniform key moves every point
- * uniformly. */
+ * first digit) is flipped by key bit 0. For k <= 16 the low k reversed bits
+ * after `x += key` are uniform in the key's low bits, and the multiplier
+ * depends only on its high half, so a uniform key makes the top 16 bits of
+ * every point exactly uniform. */
 static uint32_t lk_hash(uint32_t x, uint32_t key)
 {
     x ^= x * 0x3d20adeau;
@@ -190,16 +230,28 @@ double mc_sobol(uint32_t i, unsigned dim)
     return (double)mc_sobol_u32(i, dim) * 0x1p-32;
 }
 
+/* The two scrambles of point i, dimension dim, under its key: the digital
+ * shift and the nested uniform scramble. */
+static double sobol_xor_keyed(uint32_t i, unsigned dim, uint32_t key)
+{
+    return (double)(mc_sobol_u32(i, dim) ^ key) * 0x1p-32;
+}
+
+static double sobol_owen_keyed(uint32_t i, unsigned dim, uint32_t key)
+{
+    return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), key) * 0x1p-32;
+}
+
 double mc_sobol_xor(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
 {
-    return (double)(mc_sobol_u32(i, dim) ^ mc_qmc_key(seed, stream, dim)) * 0x1p-32;
+    return sobol_xor_keyed(i, dim, mc_qmc_key(seed, stream, dim));
 }
 
 double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
 {
-    return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), mc_qmc_key(seed, stream, dim)) *
-           0x1p-32;
+    return sobol_owen_keyed(i, dim, mc_qmc_key(seed, stream, dim));
 }
+/* END SNIPPET owen_scramble */
 
 /* Kensler (2013, "Correlated Multi-Jittered Sampling", Pixar technical memo
  * 13-01), section 3: a hash that is a bijection on the w-bit integers
@@ -237,7 +289,9 @@ uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key)
         i &= w;
         i ^= i >> 5;
     } while (i >= n);
-    return (uint32_t)(((uint64_t)i + key) % n);
+    /* (i + key) mod n without the 32-bit overflow of i + key. */
+    uint64_t r = (uint64_t)i + key % n;
+    return (uint32_t)(r >= n ? r - n : r);
 }
 
 void mc_sobol_padded2(uint64_t seed, uint64_t pixel, uint32_t pair, uint32_t k, uint32_t n,
@@ -281,6 +335,7 @@ mc_qmc_cursor mc_qmc_begin(mc_qmc_method method, uint64_t seed, uint64_t stream,
     return c;
 }
 
+/* BEGIN SNIPPET qmc_next */
 double mc_qmc_next(mc_qmc_cursor *c)
 {
     unsigned d = c->dim++;
@@ -294,9 +349,72 @@ double mc_qmc_next(mc_qmc_cursor *c)
     case MC_QMC_SOBOL:
         return mc_sobol(i, d);
     case MC_QMC_SOBOL_XOR:
-        return (double)(mc_sobol_u32(i, d) ^ index_key(c->base, d)) * 0x1p-32;
+        return sobol_xor_keyed(i, d, index_key(c->base, d));
     case MC_QMC_SOBOL_OWEN:
-        return (double)mc_owen_scramble_u32(mc_sobol_u32(i, d), index_key(c->base, d)) * 0x1p-32;
+        return sobol_owen_keyed(i, d, index_key(c->base, d));
     }
     return 0.0;
+}
+/* END SNIPPET qmc_next */
+
+/* Sobol dimension d of indices i0 .. i0+n-1, as 32-bit fractions. Going
+ * from i to i+1 flips bits 0..t of i, t = the lowest set bit of i+1, so
+ * x(i+1) = x(i) ^ (v_0 ^ ... ^ v_t): one XOR per point after the first
+ * (the natural-order counterpart of Antonov and Saleev's Gray-code step). */
+static void sobol_run(uint32_t i0, uint32_t n, unsigned d, int reversed, uint32_t *out)
+{
+    /* With `reversed` every value is produced bit-reversed (reversal
+     * commutes with XOR), which saves the Owen scramble its first
+     * reversal. */
+    const uint32_t *v = mc_sobol_matrix[d];
+    uint32_t prefix[32], acc = 0u;
+    for (unsigned k = 0; k < 32u; k++) {
+        acc ^= v[k];
+        prefix[k] = reversed ? mc_van_der_corput_u32(acc) : acc;
+    }
+    uint32_t x = mc_sobol_u32(i0, d);
+    if (reversed)
+        x = mc_van_der_corput_u32(x);
+    for (uint32_t k = 0; k < n; k++) {
+        out[k] = x;
+        uint32_t next = i0 + k + 1u;
+        if (next != 0u)
+            x ^= prefix[lowest_bit(next)];
+    }
+}
+
+void mc_qmc_fill(mc_qmc_method method, uint64_t seed, uint64_t stream, uint64_t i0, uint32_t n,
+                 unsigned dim, double *out)
+{
+    assert(dim < mc_qmc_max_dim(method));
+    uint64_t base = mc_qmc_stream_seed(seed, stream);
+    uint32_t key = index_key(base, dim);
+    if (method == MC_QMC_RANDOM || method == MC_QMC_HALTON) {
+        for (uint32_t k = 0; k < n; k++) {
+            if (method == MC_QMC_HALTON) {
+                out[k] = mirror_digits(i0 + k, primes[dim], 1, key);
+            } else {
+                mc_rng rng = mc_rng_derive(base, i0 + k);
+                mc_rng_advance(&rng, dim);
+                out[k] = mc_rng_uniform(&rng);
+            }
+        }
+        return;
+    }
+    assert(i0 + n <= UINT64_C(1) << 32);
+    /* Chunks of 256 keep the integer buffer on the stack. */
+    uint32_t buf[256];
+    for (uint32_t done = 0; done < n;) {
+        uint32_t m = n - done < 256u ? n - done : 256u;
+        sobol_run((uint32_t)(i0 + done), m, dim, method == MC_QMC_SOBOL_OWEN, buf);
+        if (method == MC_QMC_SOBOL_OWEN) {
+            for (uint32_t k = 0; k < m; k++)
+                out[done + k] = (double)mc_van_der_corput_u32(lk_hash(buf[k], key)) * 0x1p-32;
+        } else {
+            uint32_t shift = method == MC_QMC_SOBOL_XOR ? key : 0u;
+            for (uint32_t k = 0; k < m; k++)
+                out[done + k] = (double)(buf[k] ^ shift) * 0x1p-32;
+        }
+        done += m;
+    }
 }

@@ -84,7 +84,8 @@ uint32_t mc_qmc_key(uint64_t seed, uint64_t stream, unsigned dim);
  * so that every elementary interval is permuted at random (Burley's
  * hash-based scramble: a Laine-Karras style hash of the reversed bits).
  * A bijection of the 32-bit fractions for every key; the top bit is
- * flipped by key bit 0, and the result is uniform when key is uniform. */
+ * flipped by key bit 0, and for a uniform key the top 16 bits of the
+ * result are exactly uniform (the lower ones to the quality of the hash). */
 uint32_t mc_owen_scramble_u32(uint32_t v, uint32_t key);
 
 /* Sobol point i, dimension dim, as a double in [0, 1): unscrambled, with a
@@ -149,5 +150,14 @@ mc_qmc_cursor mc_qmc_begin(mc_qmc_method method, uint64_t seed, uint64_t stream,
 
 /* The next dimension of the cursor's sample, in [0, 1). */
 double mc_qmc_next(mc_qmc_cursor *c);
+
+/* Dimension `dim` of the consecutive samples i0, ..., i0 + n - 1 of the
+ * point source (method, seed, stream) into out[0 .. n): exactly the values
+ * cursors of those samples give as their dimension dim, computed faster
+ * for a run (the Sobol methods step from one index to the next with one
+ * XOR and hash the key once). dim < mc_qmc_max_dim(method); for the Sobol
+ * methods i0 + n <= 2^32. */
+void mc_qmc_fill(mc_qmc_method method, uint64_t seed, uint64_t stream, uint64_t i0, uint32_t n,
+                 unsigned dim, double *out);
 
 #endif /* MC_QMC_H */

@@ -9,15 +9,13 @@
 #include "samplers/planar.h"
 #include "samplers/sphere.h"
 
-/* pdf_integrate and pdf_integrate_warp as mc_is_samplers over unit
- * directions (vec3): mc_integrate_sampler holds the one weighting loop. */
+/* pdf_integrate as an mc_is_sampler over unit directions (vec3):
+ * mc_integrate_sampler holds the one weighting loop. */
 typedef struct dir_ctx {
     pdf_fn f;
     const pdf *p;
-    pdf_warp warp;
 } dir_ctx;
 
-/* BEGIN SNIPPET direction_estimators */
 static double dir_f(const void *x, void *ctx)
 {
     const dir_ctx *c = ctx;
@@ -32,29 +30,12 @@ static double pdf_draw(mc_rng *rng, void *ctx, void *x)
     return pdf_value(c->p, *d);
 }
 
-static double warp_draw(mc_rng *rng, void *ctx, void *x)
-{
-    const dir_ctx *c = ctx;
-    vec3 *d = x;
-    double u1 = mc_rng_uniform(rng), u2 = mc_rng_uniform(rng);
-    *d = c->warp.sample(u1, u2);
-    return c->warp.pdf(*d);
-}
-
 mc_estimate pdf_integrate(pdf_fn f, const pdf *p, mc_rng *rng, uint64_t n)
 {
-    dir_ctx c = {f, p, {NULL, NULL}};
+    dir_ctx c = {f, p};
     vec3 d;
     return mc_integrate_sampler((mc_is_sampler){pdf_draw, dir_f, NULL, &c}, &d, rng, n);
 }
-
-mc_estimate pdf_integrate_warp(pdf_fn f, pdf_warp warp, mc_rng *rng, uint64_t n)
-{
-    dir_ctx c = {f, NULL, warp};
-    vec3 d;
-    return mc_integrate_sampler((mc_is_sampler){warp_draw, dir_f, NULL, &c}, &d, rng, n);
-}
-/* END SNIPPET direction_estimators */
 
 /* Lambert: the irradiance is L times the projected solid angle, and by
  * Stokes the projected solid angle of a spherical polygon is half the

@@ -4,8 +4,8 @@
  * Chapter 2 ("MC Integration on the Sphere of Directions"): the integral of
  * f over directions is the mean of f(d) / p(d) for d drawn with a density
  * p per unit solid angle that is positive wherever f is not 0. Here that
- * estimator is written once, for a directional warp of samplers/ and for a
- * pdf object of pdf/pdf.h, together with the closed forms the programs
+ * estimator is written for a pdf object of pdf/pdf.h (the warps of
+ * samplers/ have theirs in the catalog, cat_integrate), together with the closed forms the programs
  * sphere_importance, cos_cubed, light_pdf (chapter 7, "Sampling Lights
  * Directly"), sphere_light (chapter 10 and the lecture's point light of
  * equal flux), mixture (chapter 8, "Mixture Densities") and projected_area
@@ -31,22 +31,12 @@ typedef struct pdf_fn {
     void *ctx;
 } pdf_fn;
 
-/* A directional warp of samplers/ (about +z): d = sample(u1, u2) with
- * density pdf(d) per unit solid angle. */
-typedef struct pdf_warp {
-    vec3 (*sample)(double u1, double u2);
-    double (*pdf)(vec3 d);
-} pdf_warp;
-
 /* The estimate of the integral of f over the sphere of directions from
  * n >= 1 directions drawn from p: the mean of f(d) / value(d) with its
  * variance per sample and standard error. A direction whose density is 0
  * contributes 0 (unbiased only if f vanishes wherever p does: the
  * caller's contract). */
 mc_estimate pdf_integrate(pdf_fn f, const pdf *p, mc_rng *rng, uint64_t n);
-
-/* The same with directions from a warp (two uniforms per direction). */
-mc_estimate pdf_integrate_warp(pdf_fn f, pdf_warp w, mc_rng *rng, uint64_t n);
 
 /* The irradiance at x (surface normal n, unit) from a planar convex
  * polygon v[0..k) (k >= 3, in order around its boundary) of uniform

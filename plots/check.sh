@@ -25,10 +25,11 @@ slope_cols=program,method,slope,intercept,points,n_min,n_max
 header_of() {
     case $1 in
     pi_convergence.csv | integrate_x_sq_convergence.csv | cos_cubed_variance.csv | \
-        convergence_rates.csv) echo "$rms_cols" ;;
+        convergence_rates.csv | qmc_convergence.csv) echo "$rms_cols" ;;
     rates_*.csv) echo "$rms_cols" ;;
     *_slopes.csv) echo "$slope_cols" ;;
     sphere_scatter.csv) echo method,x,y,z ;;
+    qmc_points.csv) echo method,i,x,y ;;
     hemisphere_mappings.csv) echo mapping,x,y,z ;;
     cos_theta_histograms.csv) echo sampler,param,bin_lo,bin_hi,count,density,expected_density ;;
     chi2_cells.csv) echo i,j,cos_lo,cos_hi,phi_lo,phi_hi,observed,expected,diff_sd ;;
@@ -38,7 +39,7 @@ header_of() {
     esac
 }
 expected_data="$(printf '%s.csv\n' "$@") pi_convergence_slopes.csv integrate_x_sq_convergence_slopes.csv
-cos_cubed_variance_slopes.csv convergence_rates_slopes.csv"
+cos_cubed_variance_slopes.csv convergence_rates_slopes.csv qmc_convergence_slopes.csv"
 
 figures=0
 for s in "$@"; do
@@ -97,6 +98,15 @@ check_slope() { # file program method awk-condition description
 if [ -f "$data/pi_convergence_slopes.csv" ]; then
     check_slope pi_convergence_slopes.csv pi plain 's > -0.55 && s < -0.45' "-1/2 within 0.05"
     check_slope pi_convergence_slopes.csv pi stratified 's < -0.7' "steeper than -0.7"
+fi
+# Quasi-Monte Carlo in 2D: Monte Carlo stays at -1/2 (within 0.15: the quick
+# run fits 8 seeds over 2.4 decades, a slope sd of about 0.05); scrambled
+# Sobol on the smooth integrand is steeper than -1.2 (theory -3/2); on the
+# discontinuous pi indicator no method reaches -1 (theory -3/4).
+if [ -f "$data/qmc_convergence_slopes.csv" ]; then
+    check_slope qmc_convergence_slopes.csv smooth mc 's > -0.65 && s < -0.35' "-1/2 within 0.15"
+    check_slope qmc_convergence_slopes.csv smooth sobol-owen 's < -1.2' "steeper than -1.2"
+    check_slope qmc_convergence_slopes.csv pi sobol-owen 's > -0.95' "flatter than -0.95"
 fi
 
 if [ -f "$data/chi2_pvalues.csv" ]; then

@@ -70,7 +70,7 @@ typedef struct rt_render_job {
      * at a time instead: the same image bit for bit, kept as the
      * reference the tests compare against. */
     bool one_path_at_a_time;
-    rt_sampler_kind sampler; /* default stratified; sobol needs spp <= 2^32 */
+    rt_sampler_kind sampler; /* default stratified; sobol needs spp < 2^32 */
     /* Negative-control hook (render/sampler.h): with sobol, a 1D request
      * does not move on to the next dimension. False in a correct
      * renderer. */

@@ -17,12 +17,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "catalog/catalog.h"
 #include "mc/constants.h"
 #include "mc/onb.h"
 #include "mc/quad.h"
 #include "pdf/experiments.h"
 #include "pdf/pdf.h"
-#include "samplers/hemisphere.h"
 #include "samplers/planar.h"
 #include "samplers/sphere.h"
 #include "samplers/spherical.h"
@@ -59,9 +59,26 @@ static double cos_sq(vec3 d, void *ctx)
     (void)ctx;
     return d.z * d.z;
 }
-static double hemisphere_density(vec3 d)
+/* The catalog's row `name` with its defaults, prepared into *s, and
+ * optionally its density replaced (the copy in *row). */
+static const cat_state *row_state(const char *name, cat_row *row,
+                                  double (*density)(const cat_state *, const double *),
+                                  cat_state *s)
 {
-    (void)d;
+    char err[256];
+    *row = *cat_find(name);
+    if (density)
+        row->pdf = density;
+    cat_values v;
+    cat_defaults(row, &v);
+    if (!cat_prepare(row, &v, s, err, sizeof err))
+        fail_msg("%s", err);
+    return s;
+}
+
+static double hemisphere_density(const cat_state *s, const double x[3])
+{
+    (void)s, (void)x;
     return MC_INV_2PI;
 }
 
@@ -77,12 +94,14 @@ static void test_sphere_importance(void **state)
     for (int k = 0; k <= 4; k++)
         m[k] = pow(MC_4PI, k) / (2.0 * k + 1.0);
     mc_rng rng = mc_rng_derive(seed, 0u);
-    pdf_warp uniform = {smp_uniform_sphere_sample, smp_uniform_sphere_pdf};
-    assert_moments("sphere cos^2", pdf_integrate_warp((pdf_fn){cos_sq, NULL}, uniform, &rng, N), m,
+    cat_row row;
+    cat_state s;
+    const cat_state *uniform = row_state("sphere-inverse", &row, NULL, &s);
+    assert_moments("sphere cos^2", cat_integrate((pdf_fn){cos_sq, NULL}, uniform, &rng, N), m,
                    seed);
     rng = mc_rng_derive(seed, 1u);
-    pdf_warp wrong = {smp_uniform_sphere_sample, hemisphere_density};
-    mc_estimate e = pdf_integrate_warp((pdf_fn){cos_sq, NULL}, wrong, &rng, N);
+    const cat_state *wrong = row_state("sphere-inverse", &row, hemisphere_density, &s);
+    mc_estimate e = cat_integrate((pdf_fn){cos_sq, NULL}, wrong, &rng, N);
     assert_seeded(
         negctl_record(t, "sphere weighted with the hemisphere pdf", "z-test", z_rejects(e, m[1])),
         seed);
@@ -95,9 +114,10 @@ static double cos_cubed(vec3 d, void *ctx)
     (void)ctx;
     return d.z > 0.0 ? d.z * d.z * d.z : 0.0;
 }
-static double cosine_without_pi(vec3 d)
+static double cosine_without_pi(const cat_state *s, const double x[3])
 {
-    return d.z > 0.0 ? d.z : 0.0;
+    (void)s;
+    return x[2] > 0.0 ? x[2] : 0.0;
 }
 
 /* Seeds 7002, 7003, 10^6 each. Uniform: weight 2 pi c^3, c uniform on
@@ -119,15 +139,16 @@ static void test_cos_cubed(void **state)
     uint64_t seed = mc_test_seed(7002u);
     mc_rng rng = mc_rng_derive(seed, 0u);
     pdf_fn f = {cos_cubed, NULL};
-    pdf_warp uniform = {smp_uniform_hemisphere_sample, smp_uniform_hemisphere_pdf};
-    assert_moments("cos^3 uniform", pdf_integrate_warp(f, uniform, &rng, N), mu, seed);
+    cat_row row;
+    cat_state s;
+    assert_moments("cos^3 uniform", cat_integrate(f, row_state("hemisphere", &row, NULL, &s), &rng, N),
+                   mu, seed);
     seed = mc_test_seed(7003u);
     rng = mc_rng_derive(seed, 0u);
-    pdf_warp cosine = {smp_cosine_hemisphere_sample, smp_cosine_hemisphere_pdf};
-    assert_moments("cos^3 cosine", pdf_integrate_warp(f, cosine, &rng, N), mc, seed);
+    assert_moments("cos^3 cosine", cat_integrate(f, row_state("cosine", &row, NULL, &s), &rng, N), mc,
+                   seed);
     rng = mc_rng_derive(seed, 1u);
-    mc_estimate e =
-        pdf_integrate_warp(f, (pdf_warp){smp_cosine_hemisphere_sample, cosine_without_pi}, &rng, N);
+    mc_estimate e = cat_integrate(f, row_state("cosine", &row, cosine_without_pi, &s), &rng, N);
     assert_seeded(negctl_record(t, "cosine pdf without 1/pi", "z-test", z_rejects(e, MC_PI_2)),
                   seed);
 }

@@ -74,7 +74,7 @@ static void sample_shifted(mc_rng *rng, void *ctx, double out[2])
 static chi2_spec spec_1d(const char *name, void (*s)(mc_rng *, void *, double *),
                          double (*p)(const double *, void *), void *ctx)
 {
-    chi2_spec spec = {name, 1, {0.0, 0.0}, {1.0, 0.0}, {100, 0}, s, p, ctx};
+    chi2_spec spec = {name, {1, {0.0, 0.0}, {1.0, 0.0}, {100, 0}, s, p, ctx}};
     return spec;
 }
 
@@ -96,7 +96,7 @@ static void test_chi2_harness_correct_passes(void **state)
     assert_near(o1.alpha, 1.0 - pow(0.99, 1.0 / 64.0), 1e-15);
 
     seed = mc_test_seed(3002u);
-    chi2_spec s2 = {"harness-2d", 2, {0.0, 0.0}, {1.0, 1.0}, {40, 40}, sample_2d, pdf_2d_2y, NULL};
+    chi2_spec s2 = {"harness-2d", {2, {0.0, 0.0}, {1.0, 1.0}, {40, 40}, sample_2d, pdf_2d_2y, NULL}};
     chi2_outcome o2 = chi2_run(&s2, 1000000u, seed, chi2_suite_alpha());
     chi2_print(&s2, &o2);
     if (o2.reject)
@@ -111,7 +111,7 @@ static void test_chi2_harness_integrates(void **state)
 {
     (void)state;
     chi2_spec s1 = spec_1d("n1", sample_sqrt, pdf_2x, NULL);
-    chi2_spec s2 = {"n2", 2, {0.0, 0.0}, {1.0, 1.0}, {4, 4}, sample_2d, pdf_2d_2y, NULL};
+    chi2_spec s2 = {"n2", {2, {0.0, 0.0}, {1.0, 1.0}, {4, 4}, sample_2d, pdf_2d_2y, NULL}};
     assert_near(chi2_integrate_pdf(&s1), 1.0, 1e-12);
     assert_near(chi2_integrate_pdf(&s2), 1.0, 1e-12);
 }
@@ -214,7 +214,7 @@ static void test_chi2_harness_pvalues_uniform(void **state)
     double p[RUNS];
     uint64_t seed = mc_test_seed(3004u);
     chi2_spec s = spec_1d("harness-calibration", sample_sqrt, pdf_2x, NULL);
-    s.cells[0] = 50;
+    s.gof.cells[0] = 50;
 #pragma omp parallel for schedule(dynamic)
     for (int i = 0; i < RUNS; i++) {
         mc_rng r = mc_rng_derive(seed, (uint64_t)i + 1u);
@@ -248,7 +248,7 @@ static void test_chi2_harness_pvalues_negative_control(void **state)
     double p[RUNS];
     uint64_t seed = mc_test_seed(3005u);
     chi2_spec s = spec_1d("harness-calibration-negctl", sample_sqrt, pdf_blend, NULL);
-    s.cells[0] = 50;
+    s.gof.cells[0] = 50;
 #pragma omp parallel for schedule(dynamic)
     for (int i = 0; i < RUNS; i++) {
         chi2_outcome o = chi2_run(&s, 20000u, seed + (uint64_t)i * 7919u, 1e-300);

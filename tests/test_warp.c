@@ -20,6 +20,8 @@ static const char *const NAMES[] = {"square",
                                     "disc-polar",
                                     "disc-concentric",
                                     "triangle",
+                                    "parallelogram",
+                                    "sphere-surface",
                                     "sphere-inverse",
                                     "sphere-gaussian",
                                     "sphere-rejection",
@@ -35,11 +37,15 @@ static const char *const NAMES[] = {"square",
                                     "linear",
                                     "quadratic",
                                     "sine",
+                                    "log-ends",
                                     "discrete",
                                     "alias",
                                     "quad-light",
                                     "sphere-light",
-                                    "mixture"};
+                                    "mixture",
+                                    "uniform-pdf",
+                                    "cosine-pdf",
+                                    "light-list"};
 enum { N_NAMES = sizeof NAMES / sizeof NAMES[0] };
 
 /* Runs `warp ARGS` (with `input` on stdin when not NULL) and returns its
@@ -73,7 +79,7 @@ static void test_warp_list(void **state)
                          4);
         assert_true(i < N_NAMES);
         assert_string_equal(name, NAMES[i]);
-        bool dir = strstr(domain, "sphere") || strstr(domain, "cone");
+        bool dir = (strstr(domain, "sphere") || strstr(domain, "cone")) && !strstr(domain, "surface");
         assert_string_equal(measure, dir ? "solid-angle"
                                          : (strchr(domain, '[')   ? "length"
                                             : strchr(domain, '{') ? "counting"

@@ -18,13 +18,12 @@ double chi2_suite_alpha(void)
     return mc_sidak_alpha(CHI2_SUITE_ALPHA, CHI2_SUITE_TESTS);
 }
 
-/* The same experiment as mc/gof sees it (a chi2_spec is an mc_gof_spec
- * with a name), or false when the resolution has no cells. */
+/* The experiment as mc/gof sees it, or false when the resolution has no
+ * cells. */
 static bool gof_spec(const chi2_spec *s, mc_gof_spec *g)
 {
-    *g = (mc_gof_spec){s->dims, {s->lo[0], s->lo[1]}, {s->hi[0], s->hi[1]},
-                       {s->cells[0], s->cells[1]}, s->sample, s->pdf, s->ctx};
-    return s->cells[0] >= 1 && (s->dims != 2 || s->cells[1] >= 1);
+    *g = s->gof;
+    return g->cells[0] >= 1 && (g->dims != 2 || g->cells[1] >= 1);
 }
 
 /* A table of one double per cell, or NULL. */

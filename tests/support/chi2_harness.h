@@ -33,19 +33,12 @@
 #include "mc/gof.h"
 #include "mc/rng.h"
 
-/* One goodness-of-fit experiment over a 1D interval or a 2D rectangle of an
- * (ideally equal-measure) parameterization. */
+/* One goodness-of-fit experiment of the suite: mc/gof.h's experiment (the
+ * rectangle of an, ideally equal-measure, parameterization, its cells, the
+ * sampler and the claimed density) with a name. */
 typedef struct chi2_spec {
-    const char *name;    /* used in messages and in the CSV file names written on failure */
-    int dims;            /* 1 or 2 */
-    double lo[2], hi[2]; /* parameter rectangle */
-    int cells[2];        /* histogram resolution per dimension (cells[1] ignored when dims==1) */
-    /* Draw one sample, already mapped into the parameterization. */
-    void (*sample)(mc_rng *rng, void *ctx, double out[2]);
-    /* Its claimed density w.r.t. the Lebesgue measure of the parameterization
-     * (0 outside). Called from several threads at once: must not write ctx. */
-    double (*pdf)(const double x[2], void *ctx);
-    void *ctx;
+    const char *name; /* used in messages and in the CSV file names written on failure */
+    mc_gof_spec gof;
 } chi2_spec;
 
 typedef struct chi2_outcome {
@@ -57,7 +50,7 @@ typedef struct chi2_outcome {
 } chi2_outcome;
 
 /* Histograms n samples from rng = mc_rng_derive(seed, 0), integrates
- * spec->pdf over every cell with mc_quad (1D or nested 2D), pools cells with
+ * spec->gof.pdf over every cell with mc_quad (1D or nested 2D), pools cells with
  * expected < 5, Pearson chi-square, GSL p-value; rejects at `alpha` (the
  * caller passes the Sidak-corrected level). On rejection writes observed and
  * expected tables as CSV under $MC_BUILD/test-results/chi2/<name>.csv.

@@ -11,6 +11,8 @@
 #include "mc/chi2.h"
 #include "mc/constants.h"
 #include "mc/gof.h"
+#include "mc/onb.h"
+#include "mc/quad.h"
 #include "samplers/spherical.h"
 #include "tests/support/mc_test.h"
 
@@ -35,16 +37,17 @@ warp_case warp_case_of(const cat_row *r, const cat_case *tc, cat_state *s)
     return c;
 }
 
-static bool has_invert(const warp_case *c)
-{
-    return c->cat ? c->cat->row->invert != NULL : c->invert != NULL;
-}
-
 /* Whether the case maps two uniforms (the edge grid and the round trip
  * need them). */
 static bool two_uniforms(const warp_case *c)
 {
     return c->cat ? c->cat->row->uniforms == 2 : c->sample != NULL;
+}
+
+/* Whether the round trip applies: an inverse of two uniforms. */
+static bool has_invert(const warp_case *c)
+{
+    return two_uniforms(c) && (c->cat ? c->cat->row->invert != NULL : c->invert != NULL);
 }
 
 static vec3 sample_u(const warp_case *c, double u1, double u2)
@@ -123,11 +126,7 @@ static mc_gof_spec gof_spec(const warp_case *c)
 
 chi2_spec warp_chi2_spec(const warp_case *c)
 {
-    mc_gof_spec g = gof_spec(c);
-    chi2_spec s = {c->name,           g.dims,
-                   {g.lo[0], g.lo[1]}, {g.hi[0], g.hi[1]},
-                   {g.cells[0], g.cells[1]}, g.sample,
-                   g.pdf,             g.ctx};
+    chi2_spec s = {c->name, gof_spec(c)};
     return s;
 }
 
@@ -137,10 +136,72 @@ chi2_outcome warp_chi2(const warp_case *c, uint64_t n, uint64_t seed)
     return chi2_run(&s, n, seed, chi2_suite_alpha());
 }
 
+static double value_at(vec3 d, void *ctx)
+{
+    return density(ctx, d);
+}
+
+/* The density over the directions about frame.n with cos theta in
+ * [-1, cos_hi], except inside the two cones (axis, cosine) given. */
+typedef struct rest {
+    const warp_case *c;
+    onb frame;
+    vec3 skip_axis[2];
+    double skip_cos[2];
+} rest;
+
+static double rest_integrand(double cos_theta, double phi, void *params)
+{
+    const rest *r = params;
+    vec3 d = onb_to_world(&r->frame, smp_spherical_direction(cos_theta, phi));
+    for (int k = 0; k < 2; k++)
+        if (vec3_dot(d, r->skip_axis[k]) >= r->skip_cos[k])
+            return 0.0;
+    return density(r->c, d);
+}
+
+/* What a direction chart leaves out: below a (cos theta, phi) chart's
+ * rim; around a quad-and-cap chart's light and sphere, cones 0.01 wider
+ * than the light's widest corner and than the sphere's rim, so that the
+ * mask never cuts the support. */
+static double rest_of_sphere(const warp_case *c, mc_quad *q)
+{
+    const pdf_chart *ch = &c->cat->dir_chart;
+    double v = 0.0;
+    if (ch->kind == PDF_CHART_SPHERICAL && ch->cos_lo > -1.0) {
+        rest r = {c, ch->frame, {ch->frame.n, ch->frame.n}, {2.0, 2.0}};
+        (void)mc_quad_2d(q, (mc_fn2){rest_integrand, &r}, -1.0, ch->cos_lo, 0.0, MC_2PI, &v, NULL);
+    } else if (ch->kind == PDF_CHART_QUAD_AND_CAP) {
+        vec3 mid = vec3_madd(vec3_madd(ch->corner, ch->u, 0.5), ch->v, 0.5);
+        rest r = {c,
+                  ch->frame,
+                  {ch->frame.n, vec3_normalize(vec3_sub(mid, ch->origin))},
+                  {ch->cos_lo - 0.01, 1.0}};
+        for (int k = 0; k < 4; k++) {
+            vec3 x =
+                vec3_madd(vec3_madd(ch->corner, ch->u, (double)(k & 1)), ch->v, (double)(k >> 1));
+            double cs = vec3_dot(vec3_normalize(vec3_sub(x, ch->origin)), r.skip_axis[1]);
+            r.skip_cos[1] = fmin(r.skip_cos[1], cs - 0.01);
+        }
+        (void)mc_quad_2d(q, (mc_fn2){rest_integrand, &r}, -1.0, 1.0, 0.0, MC_2PI, &v, NULL);
+    }
+    return v;
+}
+
 double warp_norm_error(const warp_case *c)
 {
     chi2_spec s = warp_chi2_spec(c);
-    return chi2_integrate_pdf(&s) - 1.0;
+    if (!c->cat || c->cat->chart != CAT_CHART_DIRECTION)
+        return chi2_integrate_pdf(&s) - 1.0;
+    mc_quad *q = mc_quad_create(1000);
+    assert_non_null(q);
+    const pdf_chart *ch = &c->cat->dir_chart;
+    double total = ch->kind == PDF_CHART_SPHERICAL
+                       ? chi2_integrate_pdf(&s)
+                       : pdf_chart_integrate(ch, value_at, (void *)c, q);
+    total += rest_of_sphere(c, q);
+    mc_quad_destroy(q);
+    return total - 1.0;
 }
 
 bool warp_norm_rejects(const warp_case *c)
@@ -164,7 +225,10 @@ bool warp_chi2_rejects(const warp_case *c, uint64_t n, uint64_t seed)
 #define SLACK (4.0 * DBL_EPSILON)
 
 /* The support of a catalog row without its own: its chart's domain (a
- * direction chart about +z: cos theta from the chart's lower end). */
+ * (cos theta, phi) chart: cos theta about its axis from the chart's lower
+ * end; the other direction charts: wherever the density is positive, which
+ * the density check sees), the interval of a line, the outcomes of an
+ * index. */
 static bool in_support(const warp_case *c, vec3 x)
 {
     if (!c->cat)
@@ -176,7 +240,10 @@ static bool in_support(const warp_case *c, vec3 x)
     switch (s->row->chart) {
     case CAT_CHART_DIRECTION:
     case CAT_CHART_LOBE:
-        return x.z >= s->dir_chart.cos_lo - SLACK;
+        return s->dir_chart.kind != PDF_CHART_SPHERICAL ||
+               vec3_dot(x, s->dir_chart.frame.n) >= s->dir_chart.cos_lo - SLACK;
+    case CAT_CHART_LINE: return x.x >= s->row->lo && x.x <= s->row->hi;
+    case CAT_CHART_INDEX: return x.x >= 0.0 && x.x == floor(x.x) && x.x < (double)s->p.n_weights;
     case CAT_CHART_DISC: return x.x * x.x + x.y * x.y <= 1.0 + SLACK && x.z == 0.0;
     case CAT_CHART_XY: return x.x >= 0.0 && x.x <= 1.0 && x.y >= 0.0 && x.y <= 1.0 && x.z == 0.0;
     default: return true;
@@ -208,7 +275,8 @@ static void check_one(const warp_case *c, vec3 x, warp_domain *d)
             bad = true;
         }
         double p = density(c, x);
-        if (!(p > 0.0) && !(rim_zero_ok(c) && x.z == 0.0)) {
+        bool pole = c->cat && c->cat->row->pole_infinite && x.x == 0.0 && x.y == 0.0;
+        if ((!(p > 0.0) && !(rim_zero_ok(c) && x.z == 0.0)) || (isinf(p) && !pole)) {
             d->zero_pdf++;
             bad = true;
         }
@@ -401,31 +469,53 @@ void warp_check(const warp_case *c, warp_check_kind k, uint64_t n, uint64_t seed
         fail_msg("%s", msg);
 }
 
-/* One test of the catalog: its case, prepared, and the check to run. */
+/* One test of the catalog: its row and case, and the check to run. */
 typedef struct catalog_test {
-    cat_state state;
-    warp_case c;
+    const cat_row *row;
+    const cat_case *tc;
     warp_check_kind k;
-    uint64_t seed;
     char name[96];
 } catalog_test;
 
-/* The registered tests, in the order cmocka runs them. cmocka hands a
- * test its initial_state only when the group has no state of its own, and
- * these groups keep their negative-control tally there; so each run takes
- * the next registered test instead (cmocka runs a group's tests in array
- * order, every one of them). */
-enum { MAX_CATALOG_TESTS = 256 };
-static catalog_test *registered[MAX_CATALOG_TESTS];
-static size_t n_registered, n_run;
+/* The registered tests. cmocka hands a test its initial_state only when
+ * the group has no state of its own, and these groups keep their
+ * negative-control tally there; so each test is its own function, the
+ * k-th of the trampolines below, which runs registered test k: whatever
+ * order cmocka runs them in, and however many of them it runs. */
+enum { MAX_CATALOG_TESTS = 100 };
+static catalog_test registered[MAX_CATALOG_TESTS];
+static size_t n_registered;
 
-static void catalog_test_run(void **state)
+/* Prepares the case afresh (nothing is shared between tests) and runs
+ * the check; a failure names the case and the check. */
+static void catalog_test_run(size_t i)
 {
-    (void)state;
-    assert_true(n_run < n_registered);
-    const catalog_test *t = registered[n_run++];
-    warp_check(&t->c, t->k, 1000000u, t->seed);
+    assert_true(i < n_registered);
+    const catalog_test *t = &registered[i];
+    static cat_state s; /* large (tables' storage); one test at a time */
+    warp_case c = warp_case_of(t->row, t->tc, &s);
+    warp_check(&c, t->k, 1000000u, warp_case_seed(mc_test_seed(t->tc->seed), t->tc->seq));
 }
+
+#define TRAMPOLINE(d, k)                                                                           \
+    static void catalog_test_##d##k(void **state)                                                  \
+    {                                                                                              \
+        (void)state;                                                                               \
+        catalog_test_run(d * 10 + k);                                                              \
+    }
+#define TRAMPOLINES10(d)                                                                           \
+    TRAMPOLINE(d, 0) TRAMPOLINE(d, 1) TRAMPOLINE(d, 2) TRAMPOLINE(d, 3) TRAMPOLINE(d, 4)           \
+        TRAMPOLINE(d, 5) TRAMPOLINE(d, 6) TRAMPOLINE(d, 7) TRAMPOLINE(d, 8) TRAMPOLINE(d, 9)
+/* catalog_test_00 .. catalog_test_99 run tests 0 .. 99. */
+TRAMPOLINES10(0) TRAMPOLINES10(1) TRAMPOLINES10(2) TRAMPOLINES10(3) TRAMPOLINES10(4)
+    TRAMPOLINES10(5) TRAMPOLINES10(6) TRAMPOLINES10(7) TRAMPOLINES10(8) TRAMPOLINES10(9)
+#define REF10(d)                                                                                   \
+    catalog_test_##d##0, catalog_test_##d##1, catalog_test_##d##2, catalog_test_##d##3,            \
+        catalog_test_##d##4, catalog_test_##d##5, catalog_test_##d##6, catalog_test_##d##7,        \
+        catalog_test_##d##8, catalog_test_##d##9
+static void (*const trampolines[MAX_CATALOG_TESTS])(void **) = {
+    REF10(0), REF10(1), REF10(2), REF10(3), REF10(4),
+    REF10(5), REF10(6), REF10(7), REF10(8), REF10(9)};
 
 void warp_catalog_tests(const char *const *families, int n_families, struct CMUnitTest *tests,
                         size_t *count, size_t max)
@@ -439,29 +529,19 @@ void warp_catalog_tests(const char *const *families, int n_families, struct CMUn
             mine = mine || strcmp(r->family, families[f]) == 0;
         for (const cat_case *tc = r->cases; mine && tc->name; tc++)
             for (int k = WARP_CHECK_CHI2; k <= WARP_CHECK_ROUNDTRIP; k++) {
-                if (k == WARP_CHECK_ROUNDTRIP && !r->invert)
+                /* The round trip needs the two uniforms of a 2D warp. */
+                if (k == WARP_CHECK_ROUNDTRIP && !(r->invert && r->uniforms == 2))
                     continue;
-                if (*count == max || n_registered == MAX_CATALOG_TESTS)
-                    return;
-                /* Lives as long as the program: cmocka holds its address. */
-                catalog_test *t = calloc(1, sizeof *t);
-                if (!t)
-                    return;
-                char err[256];
-                if (!cat_prepare_case(r, tc, &t->state, err, sizeof err)) {
-                    fprintf(stderr, "%s: %s\n", tc->name, err);
-                    free(t);
-                    continue;
+                if (*count == max || n_registered == MAX_CATALOG_TESTS) {
+                    fprintf(stderr, "warp_catalog_tests: more than %zu tests\n", *count);
+                    exit(2);
                 }
-                t->c = (warp_case){.name = tc->name,
-                                   .cat = &t->state,
-                                   .cells = {tc->cells[0], tc->cells[1]},
-                                   .direction = r->point == CAT_DIRECTION};
-                t->k = (warp_check_kind)k;
-                t->seed = warp_case_seed(mc_test_seed(tc->seed), tc->seq);
+                catalog_test *t = &registered[n_registered];
+                *t = (catalog_test){r, tc, (warp_check_kind)k, ""};
                 snprintf(t->name, sizeof t->name, "%s: %s", tc->name, check_name[k]);
-                registered[n_registered++] = t;
-                tests[(*count)++] = (struct CMUnitTest){t->name, catalog_test_run, NULL, NULL, t};
+                tests[(*count)++] =
+                    (struct CMUnitTest){t->name, trampolines[n_registered], NULL, NULL, NULL};
+                n_registered++;
             }
     }
 }

@@ -2,8 +2,8 @@
  * pass, in one place, so that each sampler test is a table of cases.
  *
  * A warp_case is one sampler with one parameter set: a row of the sampler
- * catalog (catalog/catalog.h) with its parameters, or, for the few shapes
- * and formulas the catalog has no row for, its own functions.
+ * catalog (catalog/catalog.h) with its parameters, or, for a formula under
+ * test that is no sampler of the library, its own functions.
  * The checks RETURN their measurements instead of asserting, so that the
  * same check can be required to pass on a correct case and to fail on a
  * negative control. Serves chapter 5 ("Generating Random Directions") and
@@ -34,8 +34,7 @@ struct warp_case {
     const char *name;
     /* A row of the catalog with its parameters (catalog/catalog.h): its
      * sampler, density, inverse, support and chart. NULL for a case that
-     * brings its own functions below (a shape the catalog has no row for,
-     * or a formula under test). */
+     * brings its own functions below (a formula under test). */
     const cat_state *cat;
     int cells[2]; /* chi-square resolution; {0, 0}: the chart's (50 x 100) */
     /* Own functions, when cat is NULL. */
@@ -62,7 +61,13 @@ chi2_spec warp_chi2_spec(const warp_case *c);
 /* Runs the chi-square test: n samples, seed, at chi2_suite_alpha(). */
 chi2_outcome warp_chi2(const warp_case *c, uint64_t n, uint64_t seed);
 
-/* The integral of the parameter density over the rectangle, minus 1. */
+/* The integral of the density over its whole domain, minus 1: the chart's
+ * rectangle, cell by cell (a direction chart of pdf/chart.h other than
+ * (cos theta, phi): by pdf_chart_integrate, which refines toward the
+ * chart's singular corners), plus, for a direction row, the directions the
+ * chart leaves out (below a (cos theta, phi) chart's lower end; around the
+ * light and the cap of a quad-and-cap chart), where a density that leaks
+ * mass shows up. */
 double warp_norm_error(const warp_case *c);
 
 /* For negative controls: true when the normalization check rejects c
@@ -79,7 +84,7 @@ typedef struct warp_domain {
     uint64_t not_finite; /* a coordinate is NaN or infinite */
     uint64_t not_unit;   /* | |w| - 1 | > 1e-12 (directions) */
     uint64_t outside;    /* outside the support */
-    uint64_t zero_pdf;   /* pdf(sample) <= 0 or NaN (rim exception aside) */
+    uint64_t zero_pdf;   /* pdf(sample) <= 0, NaN, or infinite (rim and pole exceptions aside) */
     vec3 example;        /* the first failing sample */
 } warp_domain;
 
@@ -126,11 +131,13 @@ void warp_check(const warp_case *c, warp_check_kind k, uint64_t n, uint64_t seed
  * streams. Base seeds pass through mc_test_seed (MC_TEST_SEED). */
 uint64_t warp_case_seed(uint64_t seed, int seq);
 
-/* Appends to tests[*count ..] (at most max in all) one cmocka test per
- * case and check of every row of the catalog whose family is one of
- * families[0 .. n_families): chi-square (10^6 samples), normalization,
- * domain, and round trip where the row has an inverse, named
- * "CASE: check". The tests' states live as long as the program. */
+/* Appends to tests[*count ..] (at most max in all, at most 100 per
+ * program) one cmocka test per case and check of every row of the catalog
+ * whose family is one of families[0 .. n_families): chi-square (10^6
+ * samples), normalization, domain, and round trip where the row has an
+ * inverse of two uniforms, named "CASE: check". Each test prepares its
+ * case itself and shares nothing with the others: it passes or fails
+ * alone, in any order. */
 void warp_catalog_tests(const char *const *families, int n_families, struct CMUnitTest *tests,
                         size_t *count, size_t max);
 
