@@ -35,7 +35,7 @@ SUPPORT_SRCS := $(wildcard tests/support/*.c)
 SUPPORT_LIB := $(B)/lib/libtestsupport.a
 TESTS := $(patsubst tests/%.c,$(B)/tests/%,$(wildcard tests/test_*.c))
 
-.PHONY: all help deps book-deps test run bench soak plots plots-check book book-check clean \
+.PHONY: all help deps book-deps test run bench reference soak plots plots-check book book-check clean \
         _test _run _bench _soak _plots _plots-check _book _book-check programs tests
 
 all: $(LIBFILES) $(PROGRAMS) $(BENCHES)
@@ -44,7 +44,8 @@ help:
 	@echo "make [all]     build the libraries and every program into build/"
 	@echo "make test      install missing packages, build, run every test (SAN=1: sanitizers, JUNIT=1: XML)"
 	@echo "make run       install missing packages, run every chapter program, print one table"
-	@echo "make bench     throughput benchmarks"
+	@echo "make bench     throughput benchmarks (and the error table, after make reference)"
+	@echo "make reference converged images of book and lambert for the error table, cached in build/"
 	@echo "make soak      the statistical tests over SEEDS seeds; prints the failure rate"
 	@echo "make plots     every figure under build/plots/"
 	@echo "make book      the tutorial as HTML and EPUB under build/book/"
@@ -84,8 +85,8 @@ _test: all $(TESTS)
 _run: all
 	@MC_BUILD=$(B) bash tools/run_table.sh
 
-_bench: all
-	@MC_BUILD=$(B) MC_MPI=$(MPI) bash tools/run_bench.sh
+_bench: all reference
+	@MC_BUILD=$(B) MC_MPI=$(MPI) MC_REF_BOOK=$(REF)/book-$(REF_TAG) bash tools/run_bench.sh
 
 SEEDS ?= 20
 _soak: all $(TESTS)
@@ -103,5 +104,6 @@ _book-check: _book
 clean:
 	rm -rf build
 
+include mk/reference.mk
 include mk/rules.mk
 include mk/pgo.mk

@@ -8,35 +8,199 @@
  * this render on one thread of the reference machine, 0.53 M paths/s), the
  * dropped non-finite samples and the mean linear RGB of the image.
  *
+ * Then, when a converged reference is given (--reference PREFIX, or the
+ * environment variable MC_REF_BOOK, which `make bench` sets to the images
+ * `make reference` caches), the error table: for each strategy, the
+ * seconds of a render with --max-threads threads, its pixel mean squared
+ * error against the reference, and how many times the book's program it
+ * is at equal error, (BOOK_SECONDS x BOOK_MSE) / (seconds x MSE): at equal
+ * error the time scales as 1 / MSE, so this is the ratio of the times the
+ * two would need to reach the same error. Last, the share of the squared
+ * error that sits in the worst 1% of the pixels.
+ *
+ * The reference is two independent renders, PREFIX-a.pfm and PREFIX-b.pfm
+ * (different seeds). Their mean is the reference; its own noise, per
+ * pixel and channel, is a quarter of MSE(a, b) (each has variance
+ * MSE(a, b) / 2, the mean half of that), and it is subtracted: the MSE
+ * against a noisy reference is the true MSE plus the reference's noise.
+ *
  * Build: make bench (or make all); run: build/bench/bench_render
  * A quicker run: MC_BENCH_QUICK=1 (or --quick) renders 10 samples per
  * pixel instead of 100; --spp N and --max-threads T override.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "examples/common/cli.h"
+#include "render/bdpt.h"
 #include "render/render.h"
 #include "render/scenes.h"
 
 #define BOOK_SECONDS 68.0 /* the book's C++ program, one thread, 100 spp */
 
+/* The book's program (its chapter-10 code, 600 x 600, 100 spp, one
+ * thread of the reference machine) as measured for the error table: 68.3 s
+ * and a pixel mean squared error of 1.01e-3 (linear RGB) against a
+ * converged reference (two independent 1024-spp renders with their noise
+ * subtracted). Both figures are those of the project's issue "The Cornell
+ * box at the book's error in a fiftieth of its time". */
+#define BOOK_ERR_SECONDS 68.3
+#define BOOK_MSE 1.01e-3
+
+/* The rows of the error table, in order: a strategy (any name of
+ * rt_bdpt_strategy_parse), "+rr" for Russian roulette, and the share of
+ * the --spp samples per pixel it takes (the slow ones fewer, to keep the
+ * bench short; the measure does not depend on the sample count). */
+typedef struct error_row {
+    const char *name;
+    double spp_share;
+} error_row;
+static const error_row error_rows[] = {
+    {"uniform", 1.0},  {"cosine", 1.0},     {"light", 1.0},   {"mixture", 1.0},
+    {"mixture+rr", 1.0}, {"mis", 1.0},       {"lighttrace", 0.5}, {"bdpt", 0.25},
+    {"bdpt+rr", 0.5},
+};
+
 static const char *const prog = "bench_render";
+
+/* Reads a PFM; NULL (after a line on stderr) when it cannot. */
+static rt_image *read_pfm(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    const char *why = "cannot open";
+    rt_image *img = f ? rt_image_read_pfm(f, &why) : NULL;
+    if (f)
+        fclose(f);
+    if (!img)
+        fprintf(stderr, "%s: %s: %s\n", prog, path, why);
+    return img;
+}
+
+/* The reference PREFIX-a.pfm and PREFIX-b.pfm as their mean; *noise
+ * receives the mean's own mean squared error, MSE(a, b) / 4. NULL when
+ * either cannot be read, is not square or their sizes differ. */
+static rt_image *load_reference(const char *prefix, double *noise)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s-a.pfm", prefix);
+    rt_image *a = read_pfm(path);
+    snprintf(path, sizeof path, "%s-b.pfm", prefix);
+    rt_image *b = a ? read_pfm(path) : NULL;
+    rt_image *ref = NULL;
+    int width = a ? a->width : 0;
+    if (a && b && a->height == width && a->height == width && b->width == width &&
+        b->height == width && (ref = rt_image_create(width, width))) {
+        *noise = 0.25 * rt_image_mse(a, b);
+        for (size_t i = 0; i < (size_t)width * (size_t)width; i++) {
+            rt_pixel_add(&ref->px[i], rt_image_get(a, (int)(i % (size_t)width), (int)(i / (size_t)width)));
+            rt_pixel_add(&ref->px[i], rt_image_get(b, (int)(i % (size_t)width), (int)(i / (size_t)width)));
+        }
+    } else if (a && b) {
+        fprintf(stderr, "%s: the reference %s-{a,b}.pfm: two square images of one size needed\n",
+                prog, prefix);
+    }
+    rt_image_destroy(a);
+    rt_image_destroy(b);
+    return ref;
+}
+
+static int cmp_desc(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return (a < b) - (a > b);
+}
+
+/* The share of the squared error (summed over the channels) in the worst
+ * 1% of the pixels, against the (noisy) reference as it is. */
+static double worst_share(const rt_image *img, const rt_image *ref)
+{
+    size_t n = (size_t)img->width * (size_t)img->height, top = n / 100 > 0 ? n / 100 : 1;
+    double *e = malloc(n * sizeof *e), all = 0.0, worst = 0.0;
+    if (!e)
+        return (double)NAN;
+    for (size_t i = 0; i < n; i++) {
+        int x = (int)(i % (size_t)img->width), y = (int)(i / (size_t)img->width);
+        vec3 d = vec3_sub(rt_image_get(img, x, y), rt_image_get(ref, x, y));
+        all += e[i] = vec3_dot(d, d);
+    }
+    qsort(e, n, sizeof *e, cmp_desc);
+    for (size_t i = 0; i < top; i++)
+        worst += e[i];
+    free(e);
+    return worst / all;
+}
+
+/* The error table (see the top of the file), at the reference's size.
+ * The book's time is for 600 x 600 pixels; for another size it is scaled
+ * by the pixel count (its cost is per path), while the pixel MSE at a
+ * given spp hardly depends on the pixel size (a pixel's mean is over
+ * spp samples either way). */
+static void error_table(const rt_scene *scene, rt_camera_params cp, uint64_t spp, uint64_t seed,
+                        int threads, const char *prefix)
+{
+    double noise = 0.0;
+    rt_image *ref = load_reference(prefix, &noise);
+    int width = ref ? ref->width : 1;
+    rt_image *img = rt_image_create(width, width);
+    if (!ref || !img) {
+        rt_image_destroy(ref);
+        rt_image_destroy(img);
+        return;
+    }
+    double book_s = BOOK_ERR_SECONDS * (double)width * (double)width / (600.0 * 600.0);
+    printf("\nerror at %dx%d against %s-{a,b}.pfm (their noise, %.3e, subtracted), %d threads; the "
+           "book's program: %.1f s for 600x600 (%.2f s for %dx%d), MSE %.3g\n",
+           width, width, prefix, noise, threads, BOOK_ERR_SECONDS, book_s, width, width, BOOK_MSE);
+    printf("%-12s %6s %9s %12s %16s %13s\n", "strategy", "spp", "seconds", "MSE", "x_book_equal_err",
+           "worst1%_share");
+    for (size_t i = 0; i < sizeof error_rows / sizeof error_rows[0]; i++) {
+        rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, width, width));
+        char name[32];
+        snprintf(name, sizeof name, "%s", error_rows[i].name);
+        char *plus = strstr(name, "+rr");
+        job.path.russian_roulette = plus != NULL;
+        if (plus)
+            *plus = '\0';
+        if (!rt_bdpt_strategy_parse(name, &job.path))
+            continue;
+        uint64_t n = (uint64_t)((double)spp * error_rows[i].spp_share);
+        job.spp = n > 0 ? n : 1;
+        job.seed = seed;
+        job.threads = threads;
+        rt_render_stats st;
+        if (rt_render(&job, img, &st) != 0) {
+            fprintf(stderr, "%s: render failed\n", prog);
+            break;
+        }
+        double mse = rt_image_mse(img, ref) - noise;
+        printf("%-12s %6llu %9.2f %12.4e %15.1fx %12.1f%%\n", error_rows[i].name,
+               (unsigned long long)job.spp, st.seconds, mse,
+               book_s * BOOK_MSE / (st.seconds * mse), 100.0 * worst_share(img, ref));
+        fflush(stdout);
+    }
+    rt_image_destroy(ref);
+    rt_image_destroy(img);
+}
 
 int main(int argc, char **argv)
 {
     uint64_t spp = 100, seed = 1;
     bool quick = getenv("MC_BENCH_QUICK") && strcmp(getenv("MC_BENCH_QUICK"), "0") != 0;
     int max_threads = 2, width = 600;
+    const char *reference = getenv("MC_REF_BOOK");
     const app_opt opts[] = {
         {"--spp", APP_COUNT, &spp, "samples per pixel (100)", NULL, 0, 0},
         {"--quick", APP_FLAG, &quick, "10 samples per pixel (also MC_BENCH_QUICK=1)", NULL, 0, 0},
         {"--max-threads", APP_INT, &max_threads, "run 1, 2, ... up to this many threads (2)", NULL, 1, 256},
         {"--width", APP_INT, &width, "image width and height (600)", NULL, 1, 65536},
         {"--seed", APP_SEED, &seed, "random seed (1)", NULL, 0, 0},
+        {"--reference", APP_STRING, &reference,
+         "PREFIX of the converged PREFIX-a.pfm and PREFIX-b.pfm: print the error table "
+         "(default $MC_REF_BOOK)", NULL, 0, 0},
     };
-    app_parse(prog, "bench_render [--spp N] [--quick] [--max-threads T]", argc, argv, opts,
+    app_parse(prog, "bench_render [--spp N] [--quick] [--max-threads T] [--reference PREFIX]", argc, argv, opts,
               sizeof opts / sizeof opts[0], NULL, 0);
     if (quick && spp == 100)
         spp = 10;
@@ -72,6 +236,11 @@ int main(int argc, char **argv)
     printf("mean linear RGB: %.6f %.6f %.6f (standard errors %.1e %.1e %.1e)\n", rgb[0].value,
            rgb[1].value, rgb[2].value, rgb[0].std_error, rgb[1].std_error, rgb[2].std_error);
     rt_image_destroy(img);
+    if (reference && *reference)
+        error_table(scene, cp, spp, seed, max_threads, reference);
+    else
+        printf("no reference (make reference, then MC_REF_BOOK=PREFIX or --reference PREFIX): "
+               "no error table\n");
     rt_scene_destroy(scene);
     return 0;
 }

@@ -1,11 +1,14 @@
 /* examples/cornell_box.c - the Cornell box of "Ray Tracing: The Rest of Your
  * Life", rendered with the book's mixture of light and material densities
- * (chapters 8-10) or any of four other strategies that must agree with it.
+ * (chapters 8-10) or any of six other strategies that must agree with it:
+ * among them light tracing and bidirectional path tracing (render/bdpt.h),
+ * and with --strategy bdpt:S,T one bidirectional strategy alone.
  *
  * Build: make; run:
  *   build/bin/cornell_box --scene book --spp 100 -o cornell.png
  *   build/bin/cornell_box --scene lambert --strategy uniform -o uniform.pfm
  *   build/bin/cornell_box --scene book --sampler sobol --reference ref.pfm -o sobol.pfm
+ *   build/bin/cornell_box --scene book --strategy bdpt --roulette -o bdpt.png
  * Prints the image's mean linear RGB (standard errors from the per-pixel
  * variances), the paths, ray segments and dropped non-finite samples, and
  * the time. --sampler picks where the uniforms come from
@@ -40,6 +43,8 @@
 #include "examples/common/cli.h"
 #include "examples/common/mpi_split.h"
 #include "examples/common/outfile.h"
+#include "render/bdpt.h"
+#include "render/lighttrace.h"
 #include "render/render.h"
 #include "render/scenes.h"
 
@@ -72,7 +77,9 @@ static options parse(int argc, char **argv)
         {"--spp", APP_COUNT, &o.spp, "samples per pixel (default 100)", NULL, 0, 0},
         {"--samples", APP_COUNT, &o.spp, "same as --spp", NULL, 0, 0},
         {"--max-depth", APP_INT, &o.depth, "most ray segments per path (default 50)", NULL, 0, 1e6},
-        {"--strategy", APP_CHOICE, &o.strategy, "sampling strategy (default mixture)", rt_strategy_names, 0, 0},
+        {"--strategy", APP_STRING, &o.strategy,
+         "sampling strategy: uniform, cosine, light, mixture, mis, lighttrace, bdpt, or bdpt:S,T "
+         "(one bidirectional strategy, unweighted) (default mixture)", NULL, 0, 0},
         {"--sampler", APP_CHOICE, &o.sampler,
          "where the uniforms come from: the pixel position jittered over cells and PCG32 for the rest, "
          "PCG32 for all, or Owen-scrambled Sobol (default stratified)", rt_sampler_names, 0, 0},
@@ -93,10 +100,24 @@ static options parse(int argc, char **argv)
     if (o.spp > UINT64_MAX / ((uint64_t)o.width * (uint64_t)o.width))
         app_fail(prog, "--spp %llu is too many for a %dx%d image", (unsigned long long)o.spp, o.width,
                  o.width);
+    rt_path_settings ps = rt_path_settings_default(RT_MIXTURE);
+    if (!rt_bdpt_strategy_parse(o.strategy, &ps))
+        app_fail(prog, "--strategy %s: not a strategy (uniform, cosine, light, mixture, mis, "
+                       "lighttrace, bdpt, bdpt:S,T with S >= 0, T >= 1, S + T >= 2)", o.strategy);
+    if (rt_strategy_splats(ps.strategy) && o.depth > RT_BDPT_MAX_DEPTH)
+        app_fail(prog, "--max-depth %d: %s takes at most %d", o.depth, o.strategy, RT_BDPT_MAX_DEPTH);
     if (strcmp(o.sampler, "sobol") == 0 && o.spp > UINT32_MAX)
         app_fail(prog, "--spp %llu: the sobol sampler takes fewer than 2^32 samples per pixel",
                  (unsigned long long)o.spp);
     return o;
+}
+
+/* Whether the chosen strategy splats light paths onto the image (light
+ * tracing, bidirectional); the option was checked by main. */
+static bool strategy_splats(const options *o)
+{
+    rt_path_settings ps = rt_path_settings_default(RT_MIXTURE);
+    return rt_bdpt_strategy_parse(o->strategy, &ps) && rt_strategy_splats(ps.strategy);
 }
 
 /* Refuses (exit 2) an image whose buffers would not fit: the pixels
@@ -108,6 +129,8 @@ static void check_memory(const options *o)
 {
     double pixels = (double)o->width * (double)o->width;
     double need = pixels * (double)(sizeof(rt_pixel) + sizeof(mc_rng) + 3) + 64e6;
+    if (strategy_splats(o))
+        need += pixels * 3.0 * sizeof(double) * RT_SPLAT_BUFFERS;
     double have = (double)sysconf(_SC_PHYS_PAGES) * (double)sysconf(_SC_PAGE_SIZE);
     struct rlimit rl;
     if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (double)rl.rlim_cur < have)
@@ -208,7 +231,9 @@ static void report(const options *o, const rt_image *img, const rt_render_stats 
     uint64_t fewest = UINT64_MAX;
     for (size_t i = 0; i < (size_t)img->width * (size_t)img->height; i++)
         fewest = img->px[i].n < fewest ? img->px[i].n : fewest;
-    if (fewest < 2)
+    /* Nor for the strategies that splat: a pixel's splats come from the
+     * light paths of every pixel, and their variance is not tracked. */
+    if (fewest < 2 || strategy_splats(o))
         for (int c = 0; c < 3; c++)
             rgb[c].std_error = (double)NAN;
     app_table t = {stdout, o->csv, NULL, 0, "cornell_box"};
@@ -259,6 +284,9 @@ int main(int argc, char **argv)
     rt_image *ref = load_reference(&o);
     if (mpi.size > o.width)
         app_fail(prog, "%d ranks are more than the %d image rows", mpi.size, o.width);
+    if (mpi.size > 1 && strategy_splats(&o))
+        app_fail(prog, "--strategy %s splats light paths onto any pixel: it runs in one process, "
+                       "not over %d ranks", o.strategy, mpi.size);
     /* The file is created only once the image is there (a job killed on
      * the way leaves nothing), but whether it can be is checked now. */
     app_outfile out;
@@ -279,7 +307,7 @@ int main(int argc, char **argv)
     }
     rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, o.width, o.width));
     rt_gamma gamma = RT_GAMMA_2;
-    (void)rt_strategy_parse(o.strategy, &job.path.strategy);
+    (void)rt_bdpt_strategy_parse(o.strategy, &job.path);
     (void)rt_sampler_parse(o.sampler, &job.sampler);
     (void)rt_gamma_parse(o.gamma, &gamma);
     job.path.max_depth = o.depth;

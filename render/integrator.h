@@ -20,7 +20,10 @@
  *                reach; a continued path that lands on such an emitter
  *                adds nothing (it would count that light twice)
  *   RT_MIS       both count, weighted by Veach's power heuristic
- *                w_a = p_a^2 / (p_light^2 + p_material^2)
+ *                w_a = p_a^2 / (p_light^2 + p_material^2); its shadow
+ *                rays aim at the emitters of the light list only
+ *                (rt_scene_emitters): an entry that emits nothing, such
+ *                as the book's glass sphere, would only waste them
  * Specular events (metal, glass) continue with their single ray in all
  * strategies, and emission reached right after them always counts.
  * With no lights, RT_MIXTURE, RT_LIGHT and RT_MIS reduce to RT_COSINE.
@@ -37,7 +40,21 @@
 #include "render/ray.h"
 #include "render/scene.h"
 
-typedef enum rt_strategy { RT_UNIFORM, RT_COSINE, RT_LIGHT, RT_MIXTURE, RT_MIS } rt_strategy;
+/* RT_LIGHTTRACE and RT_BDPT are the strategies of render/bdpt.h, which
+ * splat onto the image: they render through rt_render only (rt_radiance
+ * does not serve them). */
+typedef enum rt_strategy {
+    RT_UNIFORM,
+    RT_COSINE,
+    RT_LIGHT,
+    RT_MIXTURE,
+    RT_MIS,
+    RT_LIGHTTRACE,
+    RT_BDPT
+} rt_strategy;
+
+/* True for the strategies that splat (render/bdpt.h). */
+static inline bool rt_strategy_splats(rt_strategy s) { return s == RT_LIGHTTRACE || s == RT_BDPT; }
 
 typedef struct rt_path_settings {
     rt_strategy strategy;
@@ -53,14 +70,23 @@ typedef struct rt_path_settings {
      * the same numbers; the objects are the reference, the default is
      * faster. */
     bool pdf_objects;
+    /* RT_BDPT: 0, 0 for every strategy weighted by MIS; else the one
+     * strategy (bdpt_s light vertices, bdpt_t camera vertices),
+     * unweighted (render/bdpt.h). */
+    int bdpt_s, bdpt_t;
+    /* Negative-control hooks of render/bdpt.h, off (0) in a correct
+     * renderer: splats without the 1 / cos^3 of the camera importance;
+     * strategy mis_double - 1 counted twice in the MIS weights' sum. */
+    bool splat_drop_cos3;
+    int mis_double;
 } rt_path_settings;
 
 /* Book defaults: the given strategy, max depth 50, no roulette
  * (rr_start 3 if it is switched on), light_pdf_scale 1, fast densities. */
 rt_path_settings rt_path_settings_default(rt_strategy strategy);
 
-/* The strategy named "uniform", "cosine", "light", "mixture" or "mis";
- * false for anything else. */
+/* The strategy named "uniform", "cosine", "light", "mixture", "mis",
+ * "lighttrace" or "bdpt"; false for anything else. */
 bool rt_strategy_parse(const char *name, rt_strategy *out);
 
 /* The name of a strategy. */

@@ -7,6 +7,7 @@
 
 #include "render/fast/rows.h"
 #include "render/jitter.h"
+#include "render/lighttrace.h"
 
 rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera)
 {
@@ -109,6 +110,9 @@ int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
 
 int rt_render_rows(const rt_render_job *job, rt_image *img, int first, int step, rt_render_stats *stats)
 {
+    /* A light path splats onto any pixel: its renderer takes the whole image. */
+    if (rt_strategy_splats(job->path.strategy))
+        return first == 0 && step == 1 ? rt_splat_render(job, img, stats) : -1;
     if (!job->scene || job->spp < 1 || job->camera.width != img->width ||
         job->camera.height != img->height || job->path.max_depth < 0 ||
         (job->sampler == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX) || step < 1 ||

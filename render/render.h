@@ -104,7 +104,9 @@ rt_sampler rt_render_sampler(const rt_render_job *job, mc_rng rng, uint64_t pixe
  * pixel's samples and stream do not depend on which rows are rendered
  * with it, so each of its pixels is the one rt_render makes, bit for bit:
  * P processes taking first = 0 .. P-1 with step P render disjoint rows of
- * the same image. Progress and stats count these rows only. */
+ * the same image. Progress and stats count these rows only. Strategies
+ * that splat (rt_strategy_splats: light tracing, bidirectional) need the
+ * whole image: -1 unless first = 0 and step = 1. */
 int rt_render_rows(const rt_render_job *job, rt_image *img, int first, int step, rt_render_stats *stats);
 
 #endif /* RT_RENDER_H */

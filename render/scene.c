@@ -41,6 +41,9 @@ struct rt_scene {
     rt_prim lights[RT_MAX_LIGHTS];
     rt_light fast_lights[RT_MAX_LIGHTS];
     int n_lights;
+    rt_prim emitters[RT_MAX_LIGHTS];
+    rt_light fast_emitters[RT_MAX_LIGHTS];
+    int n_emitters;
 };
 
 /* Makes room for one more element of `size` bytes in *arr. */
@@ -313,6 +316,13 @@ int rt_scene_build(rt_scene *s)
      * fast path's four-ray and one-ray tests. */
     if (s->bvh.nodes[0].count > 0 && !(s->lanes = rt_leaf_lanes_create(s->prims, s->n_prims)))
         return -1;
+    for (int i = 0; i < s->n_lights; i++) {
+        vec3 e = s->materials[s->lights[i].material].emission;
+        if (e.x != 0.0 || e.y != 0.0 || e.z != 0.0) {
+            s->emitters[s->n_emitters] = s->lights[i];
+            s->fast_emitters[s->n_emitters++] = s->fast_lights[i];
+        }
+    }
     s->isa = rt_isa_best();
     s->built = true;
     return 0;
@@ -403,19 +413,33 @@ const rt_material *rt_scene_material(const rt_scene *s, int m) { return &s->mate
 
 int rt_scene_light_count(const rt_scene *s) { return s->n_lights; }
 
-pdf rt_scene_lights_pdf(const rt_scene *s, vec3 origin, pdf *items, const pdf **ptrs)
+/* The pdf list toward the n primitives lights[0..n). */
+static pdf prims_pdf(const rt_prim *lights, int n, vec3 origin, pdf *items, const pdf **ptrs)
 {
-    for (int i = 0; i < s->n_lights; i++) {
-        const rt_prim *l = &s->lights[i];
+    for (int i = 0; i < n; i++) {
+        const rt_prim *l = &lights[i];
         items[i] = l->kind == RT_PRIM_QUAD
                        ? pdf_toward_quad(origin, l->as.quad.q, l->as.quad.u, l->as.quad.v)
                        : pdf_toward_sphere(origin, l->as.sphere.center, l->as.sphere.radius);
         ptrs[i] = &items[i];
     }
-    return pdf_list((const pdf *const *)ptrs, (size_t)s->n_lights);
+    return pdf_list((const pdf *const *)ptrs, (size_t)n);
+}
+
+pdf rt_scene_lights_pdf(const rt_scene *s, vec3 origin, pdf *items, const pdf **ptrs)
+{
+    return prims_pdf(s->lights, s->n_lights, origin, items, ptrs);
+}
+
+pdf rt_scene_emitters_pdf(const rt_scene *s, vec3 origin, pdf *items, const pdf **ptrs)
+{
+    return prims_pdf(s->emitters, s->n_emitters, origin, items, ptrs);
 }
 
 const rt_light *rt_scene_lights(const rt_scene *s) { return s->fast_lights; }
+int rt_scene_emitter_count(const rt_scene *s) { return s->n_emitters; }
+const rt_prim *rt_scene_emitter_prims(const rt_scene *s) { return s->emitters; }
+const rt_light *rt_scene_emitters(const rt_scene *s) { return s->fast_emitters; }
 double rt_scene_t_min(const rt_scene *s) { return s->t_min; }
 vec3 rt_scene_background(const rt_scene *s) { return s->background; }
 int rt_scene_prim_count(const rt_scene *s) { return s->n_prims; }

@@ -116,6 +116,19 @@ pdf rt_scene_lights_pdf(const rt_scene *s, vec3 origin, pdf *items, const pdf **
  * them), for the fast densities of render/lights.h. */
 const rt_light *rt_scene_lights(const rt_scene *s);
 
+/* The emitters: the entries of the light list whose material emits
+ * (nonzero emission), in light-list order, as primitives and with the
+ * constants of render/lights.h. Next-event estimation aims its shadow rays
+ * at these only (a shadow ray toward the book's glass sphere, which is in
+ * the light list for the mixture's sake, brings back nothing), and light
+ * paths start on them. */
+int rt_scene_emitter_count(const rt_scene *s);
+const rt_prim *rt_scene_emitter_prims(const rt_scene *s);
+const rt_light *rt_scene_emitters(const rt_scene *s);
+
+/* rt_scene_lights_pdf over the emitters only (at least one). */
+pdf rt_scene_emitters_pdf(const rt_scene *s, vec3 origin, pdf *items, const pdf **ptrs);
+
 /* t_min and background as set. */
 double rt_scene_t_min(const rt_scene *s);
 vec3 rt_scene_background(const rt_scene *s);

@@ -1,0 +1,123 @@
+/* render/bdpt.h - bidirectional path tracing: paths built from both ends,
+ * every way of joining them weighted by multiple importance sampling.
+ *
+ * The chapter after the Cornell box chapters of "Ray Tracing: The Rest of
+ * Your Life" ("The noisy caustic"): a path traced from the camera finds
+ * the caustic under the glass sphere only when its diffuse bounce happens
+ * to aim at the sphere and the sphere happens to send it to the lamp; a
+ * path traced from the lamp through the sphere lands in the caustic every
+ * time, and only its last step, to the camera, has to be made by a
+ * connection. Veach's thesis (chapter 10, "Bidirectional path tracing")
+ * does both at once:
+ *   - a light subpath y_0 .. y_{s-1}: y_0 uniform on the area of an
+ *     emitter chosen uniformly (rt_scene_emitters), then cosine-weighted
+ *     emission and the materials' own sampling;
+ *   - a camera subpath z_0 .. z_{t-1}: z_0 the pinhole, then the camera
+ *     ray of the pixel sample and the materials' sampling;
+ *   - every strategy (s, t), s + t - 1 <= max_depth segments: the two
+ *     subpaths joined by a shadow ray between y_{s-1} and z_{t-1}
+ *     (s = 0: the camera subpath's own hit on an emitter; t = 1: the light
+ *     subpath joined to the camera and splatted onto the pixel it is seen
+ *     in, "light tracing");
+ *   - each (s, t) weighted by the power heuristic over the strategies that
+ *     could have built the same path, w_s = p_s^2 / sum_r p_r^2, with p_r
+ *     the density (area measure, every vertex) with which strategy r
+ *     samples it. Specular vertices (glass, metal) cannot be joined: a
+ *     strategy that would join at one is left out of the sum, and the
+ *     densities through it count as 1 in both directions (the deltas
+ *     cancel). One exception to the heuristic: a path whose light end is
+ *     reached through a specular vertex (the caustic) goes wholly to the
+ *     joins when one can make it, not partly to s = 0 (see
+ *     weight_from in bdpt.c).
+ * The camera's importance for pixel j is W_j = 1 / (A_pix cos^3 theta)
+ * per unit solid angle: a pixel's value is the mean of the radiance over
+ * its area A_pix of the image plane at distance 1, and a patch dA of that
+ * plane subtends cos^3 theta dA. A camera ray drawn uniformly in the pixel
+ * has exactly that density, so W_j / p = 1 for camera subpaths; a light
+ * subpath joined to the camera carries W_j, and an image of N light paths
+ * divides their splats by N. For the weights, every strategy takes one
+ * sample per pixel sample, and the camera's density is the film's,
+ * 1 / (A_film cos^3 theta) with A_film the whole image (Veach 10.3.3).
+ * Lambertian surfaces are the only ones that can be joined. With
+ * Russian roulette (rt_path_settings) both walks stop as the book's
+ * integrator's paths do; the weights, functions of the path alone, still
+ * sum to 1 over the strategies.
+ */
+#ifndef RT_BDPT_H
+#define RT_BDPT_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "render/camera.h"
+#include "render/integrator.h"
+#include "render/sampler.h"
+#include "render/scene.h"
+
+/* The longest subpath: max_depth of a bidirectional render is at most
+ * this many segments. */
+#define RT_BDPT_MAX_DEPTH 64
+
+typedef enum rt_bdpt_kind {
+    RT_BDPT_CAMERA, /* the pinhole */
+    RT_BDPT_LIGHT,  /* a point drawn on an emitter (y_0) */
+    RT_BDPT_SURFACE /* a hit of a ray */
+} rt_bdpt_kind;
+
+/* A vertex of a subpath or of a joined path. */
+typedef struct rt_bdpt_vertex {
+    rt_bdpt_kind kind;
+    vec3 p;
+    vec3 ng;              /* unit geometric normal (any orientation); camera: the view axis */
+    vec3 ns;              /* surface: unit normal facing the ray that arrived */
+    bool front_face;      /* surface: the ray arrived on the emitting side */
+    bool delta;           /* a specular vertex: cannot be joined */
+    const rt_material *m; /* surface: its material; light: the emitter's */
+    int emitter;          /* light: which emitter (rt_scene_emitters) */
+    vec3 beta;            /* the subpath's weight up to and including this vertex */
+} rt_bdpt_vertex;
+
+/* What the walks and the weights need besides the scene: the camera, its
+ * film density and the settings. */
+typedef struct rt_bdpt_ctx {
+    const rt_scene *scene;
+    const rt_path_settings *ps;
+    const rt_camera *camera;
+    vec3 forward;      /* unit view axis */
+    double pixel_area; /* A_pix on the plane at distance 1 */
+} rt_bdpt_ctx;
+
+/* The context of a render of scene through camera with settings ps. */
+rt_bdpt_ctx rt_bdpt_ctx_make(const rt_scene *scene, const rt_path_settings *ps,
+                             const rt_camera *camera);
+
+/* The pixel of the image that the point p is seen in from the camera
+ * (*px = row-major index), and the camera importance W_j of that pixel
+ * for the direction toward p; false when p is outside the view. */
+bool rt_bdpt_camera_importance(const rt_bdpt_ctx *c, vec3 p, size_t *px, double *importance);
+
+/* The power-heuristic weight of strategy s (s light vertices, n - s
+ * camera vertices) for the joined path x[0..n) (x[0] on an emitter or
+ * wherever the camera subpath ended, x[n-1] the camera), 2 <= n,
+ * 0 <= s < n: p_s^2 / sum_r p_r^2 over the strategies r that can join
+ * there. mis_double (the negative-control hook of rt_path_settings) counts
+ * strategy mis_double - 1 twice in the sum. */
+double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, int s);
+
+/* One sample of the pixel whose camera ray is camera_ray: both subpaths,
+ * then every strategy that the settings select (ps->strategy RT_BDPT:
+ * bdpt_s, bdpt_t both 0 for all of them weighted, else the one strategy
+ * (bdpt_s, bdpt_t) unweighted; RT_LIGHTTRACE: every (s, 1), unweighted,
+ * and no camera subpath). Returns the radiance of the strategies with
+ * t >= 2 for this pixel; adds those with t = 1, times the camera
+ * importance, to splat[3 j .. 3 j + 3) of the pixel j they are seen in.
+ * Draws from sampler; adds the rays traced to *segments. */
+vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, double *splat,
+                    uint64_t *segments);
+
+/* Parses "bdpt" (every strategy, weighted), "bdpt:S,T" (one strategy,
+ * unweighted: S >= 0, T >= 1, S + T >= 2) or "lighttrace" into ps, or any
+ * other name of rt_strategy_parse; false for anything else. */
+bool rt_bdpt_strategy_parse(const char *name, rt_path_settings *ps);
+
+#endif /* RT_BDPT_H */

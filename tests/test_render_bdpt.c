@@ -1,0 +1,381 @@
+/* tests/test_render_bdpt.c - light tracing and bidirectional path tracing
+ * (render/bdpt.h, render/lighttrace.h): every unweighted strategy (s, t)
+ * of a path length agrees with the others, the MIS weights of a path sum
+ * to 1, light tracing and the weighted sum agree with the book's mixture,
+ * the white furnace and the sphere light hold, images do not depend on the
+ * thread count, and a splat without the camera importance's 1 / cos^3 or
+ * a weight that counts one strategy twice is caught.
+ *
+ * Region estimates come from independent batches (one render per seed):
+ * a splat lands in any pixel, so the per-pixel variances of
+ * rt_image_region_stats do not describe a region's error; the spread of B
+ * batch means does. Each comparison is a two-sample t statistic,
+ * (a - b) / sqrt(se_a^2 + se_b^2), against Student's t with B - 1 degrees
+ * of freedom (fewer than Welch's, so conservative), Sidak-corrected over
+ * the comparisons of the test at a family false-alarm level of 1e-3. */
+#include "tests/support/mc_test.h"
+
+#include <gsl/gsl_cdf.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "mc/chi2.h"
+#include "mc/stats.h"
+#include "render/bdpt.h"
+#include "render/render.h"
+#include "render/scenes.h"
+#include "tests/support/negctl.h"
+
+enum { W = 24, GRID = 3, CELL = W / GRID, REGIONS = GRID * GRID, BATCHES = 16 };
+
+typedef struct regions {
+    mc_estimate e[REGIONS][3];
+} regions;
+
+/* Region means of BATCHES renders of spp samples per pixel each (seeds
+ * seed, seed + 1, ...), with standard errors from their spread. */
+static regions batched(const rt_scene *s, rt_camera_params cp, rt_path_settings ps, uint64_t spp,
+                       uint64_t seed)
+{
+    rt_image *img = rt_image_create(W, W);
+    mc_welford acc[REGIONS][3];
+    for (int k = 0; k < REGIONS; k++)
+        for (int c = 0; c < 3; c++)
+            acc[k][c] = mc_welford_init();
+    for (int b = 0; b < BATCHES; b++) {
+        rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, W, W));
+        job.path = ps;
+        job.spp = spp;
+        job.seed = seed + (uint64_t)b;
+        job.threads = 2;
+        assert_int_equal(rt_render(&job, img, NULL), 0);
+        for (int k = 0; k < REGIONS; k++) {
+            int x = (k % GRID) * CELL, y = (k / GRID) * CELL;
+            mc_estimate e[3];
+            rt_image_region_stats(img, x, y, x + CELL, y + CELL, e);
+            for (int c = 0; c < 3; c++)
+                mc_welford_add(&acc[k][c], e[c].value);
+        }
+    }
+    regions r;
+    for (int k = 0; k < REGIONS; k++)
+        for (int c = 0; c < 3; c++)
+            r.e[k][c] = mc_welford_estimate(&acc[k][c]);
+    rt_image_destroy(img);
+    return r;
+}
+
+/* The largest |t| of the region differences a - b; a region where both
+ * are exactly 0 (no light reaches it at that length) is skipped, one where
+ * they differ with no spread at all counts as infinite. */
+static double max_t(const regions *a, const regions *b, int *where)
+{
+    double worst = 0.0;
+    for (int k = 0; k < REGIONS; k++)
+        for (int c = 0; c < 3; c++) {
+            double d = a->e[k][c].value - b->e[k][c].value;
+            double se = sqrt(a->e[k][c].std_error * a->e[k][c].std_error +
+                             b->e[k][c].std_error * b->e[k][c].std_error);
+            double t = se > 0.0 ? fabs(d) / se : d == 0.0 ? 0.0 : HUGE_VAL;
+            if (t > worst) {
+                worst = t;
+                *where = k;
+            }
+        }
+    return worst;
+}
+
+/* The t threshold for m comparisons at a family level of 1e-3. */
+static double threshold(int m)
+{
+    return gsl_cdf_tdist_Qinv(0.5 * mc_sidak_alpha(1e-3, m), BATCHES - 1);
+}
+
+static rt_path_settings bdpt_settings(int s, int t, int depth)
+{
+    rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+    ps.bdpt_s = s;
+    ps.bdpt_t = t;
+    ps.max_depth = depth;
+    return ps;
+}
+
+/* On lambert (every surface diffuse: every strategy samples every path),
+ * for each path length k = 1 .. 4 segments, every unweighted strategy
+ * (s, k + 1 - s), s = 0 .. k, against (1, k) (next-event estimation's
+ * way): 10 comparisons x 27 region-channels = 270 t statistics. BATCHES
+ * renders of 64 samples per pixel each, seeds 301 and on. */
+static void test_unweighted_strategies_agree_per_length(void **state)
+{
+    (void)state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("lambert", &cp);
+    uint64_t seed = mc_test_seed(301u);
+    double thr = threshold(10 * REGIONS * 3);
+    for (int k = 1; k <= 4; k++) {
+        regions ref = batched(s, cp, bdpt_settings(1, k, k), 64, seed + 100u * (uint64_t)k);
+        for (int sv = 0; sv <= k; sv++) {
+            if (sv == 1)
+                continue;
+            regions r = batched(s, cp, bdpt_settings(sv, k + 1 - sv, k), 64,
+                                seed + 100u * (uint64_t)k + 20u * (uint64_t)(sv + 1));
+            int where = 0;
+            double t = max_t(&r, &ref, &where);
+            printf("lambert length %d: bdpt:%d,%d vs bdpt:1,%d: max |t| %.2f (threshold %.2f)\n", k, sv,
+                   k + 1 - sv, k, t, thr);
+            if (t >= thr)
+                fail_msg("length %d: bdpt:%d,%d disagrees with bdpt:1,%d in region %d: |t| %.2f >= %.2f "
+                         "(seed %llu)", k, sv, k + 1 - sv, k, where, t, thr, (unsigned long long)seed);
+        }
+    }
+    rt_scene_destroy(s);
+}
+
+/* A vertex of a made-up path on the Lambertian room: point p on the
+ * plane with normal n. */
+static rt_bdpt_vertex surface(vec3 p, vec3 n, const rt_material *m)
+{
+    rt_bdpt_vertex v = {RT_BDPT_SURFACE, p, n, n, true, false, m, -1, vec3_make(1, 1, 1)};
+    return v;
+}
+
+/* The MIS weights of a path over all the strategies that can join it sum
+ * to 1: 2000 random paths of 2 to 9 vertices (seed 311) on the walls of
+ * lambert's room, the first on its lamp, the last the camera, a quarter of
+ * the inner vertices made specular; |sum - 1| < 1e-12. Negative control:
+ * strategy 1 counted twice in the weights' sum must break it. */
+static void test_mis_weights_sum_to_one(void **state)
+{
+    negctl *nc = *state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("lambert", &cp);
+    rt_camera cam = rt_camera_make(cp, W, W);
+    rt_path_settings ps = rt_path_settings_default(RT_BDPT), bad = ps;
+    bad.mis_double = 2;
+    rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam), cb = rt_bdpt_ctx_make(s, &bad, &cam);
+    rt_material white = rt_lambertian(vec3_make(0.73, 0.73, 0.73));
+    rt_material glass = rt_dielectric(1.5, RT_FRESNEL_SCHLICK);
+    const rt_prim *lamp = &rt_scene_emitter_prims(s)[0];
+    mc_rng rng = mc_rng_derive(mc_test_seed(311u), 0u);
+    /* The five walls as (axis, value, inward normal sign). */
+    static const int axis[5] = {0, 0, 1, 1, 2};
+    static const double at[5] = {0.0, 555.0, 0.0, 555.0, 555.0}, sign[5] = {1, -1, 1, -1, -1};
+    double worst = 0.0, worst_bad = 0.0;
+    for (int trial = 0; trial < 2000; trial++) {
+        int n = 2 + (int)mc_rng_bounded(&rng, 8u);
+        rt_bdpt_vertex x[10];
+        vec3 q = vec3_add(lamp->as.quad.q, vec3_add(vec3_scale(lamp->as.quad.u, mc_rng_uniform(&rng)),
+                                                    vec3_scale(lamp->as.quad.v, mc_rng_uniform(&rng))));
+        x[0] = (rt_bdpt_vertex){RT_BDPT_LIGHT, q, lamp->as.quad.normal, lamp->as.quad.normal, true,
+                                false, rt_scene_material(s, lamp->material), 0, vec3_make(1, 1, 1)};
+        for (int i = 1; i < n - 1; i++) {
+            int wall = (int)mc_rng_bounded(&rng, 5u);
+            double p[3] = {555.0 * mc_rng_uniform(&rng), 555.0 * mc_rng_uniform(&rng),
+                           555.0 * mc_rng_uniform(&rng)}, nn[3] = {0, 0, 0};
+            p[axis[wall]] = at[wall];
+            nn[axis[wall]] = sign[wall];
+            x[i] = surface(vec3_make(p[0], p[1], p[2]), vec3_make(nn[0], nn[1], nn[2]), &white);
+            if (mc_rng_uniform(&rng) < 0.25) {
+                x[i].delta = true;
+                x[i].m = &glass;
+            }
+        }
+        x[n - 1] = (rt_bdpt_vertex){RT_BDPT_CAMERA, cam.origin, c.forward, c.forward, true, false,
+                                    NULL, -1, vec3_make(1, 1, 1)};
+        /* Strategy s joins x[s-1] and x[s]: not at a specular vertex. */
+        double sum = 0.0, sum_bad = 0.0;
+        for (int sv = 0; sv < n; sv++) {
+            if (sv > 0 && (x[sv - 1].delta || x[sv].delta))
+                continue;
+            sum += rt_bdpt_mis_weight(&c, x, n, sv);
+            sum_bad += rt_bdpt_mis_weight(&cb, x, n, sv);
+        }
+        worst = fmax(worst, fabs(sum - 1.0));
+        worst_bad = fmax(worst_bad, fabs(sum_bad - 1.0));
+    }
+    printf("MIS weights over 2000 random paths: largest |sum - 1| %.2e; counting strategy 1 twice: "
+           "%.2e\n", worst, worst_bad);
+    assert_true(worst < 1e-12);
+    if (!negctl_record(nc, "MIS weight counting one strategy twice", "weights sum to 1",
+                       worst_bad >= 1e-12))
+        fail_msg("the double-counted strategy was not caught: |sum - 1| %.2e", worst_bad);
+    rt_scene_destroy(s);
+}
+
+/* Light tracing and the weighted bidirectional sum against the book's
+ * mixture: lambert (lighttrace, bdpt), book and book-metal (bdpt), depth
+ * 50, BATCHES renders of 64 (bdpt, lighttrace) or 256 (mixture) samples
+ * per pixel, seeds 401 and on: 4 comparisons x 27 = 108 t statistics.
+ * Negative controls on lambert: light tracing whose splats lack the
+ * 1 / cos^3 of the camera importance, and bdpt whose weights count
+ * strategy 1 (next-event estimation) twice; each must exceed the
+ * threshold somewhere. */
+static void test_agree_with_mixture(void **state)
+{
+    negctl *nc = *state;
+    uint64_t seed = mc_test_seed(401u);
+    double thr = threshold(4 * REGIONS * 3);
+    static const char *const scenes[3] = {"lambert", "book", "book-metal"};
+    for (int i = 0; i < 3; i++) {
+        rt_camera_params cp;
+        rt_scene *s = rt_scene_named(scenes[i], &cp);
+        regions ref = batched(s, cp, rt_path_settings_default(RT_MIXTURE), 256, seed + 100u * (uint64_t)i);
+        for (int st = RT_LIGHTTRACE; st <= RT_BDPT; st++) {
+            if (st == RT_LIGHTTRACE && i > 0)
+                continue; /* light tracing cannot see the glass sphere */
+            regions r = batched(s, cp, rt_path_settings_default((rt_strategy)st), 64,
+                                seed + 100u * (uint64_t)i + 20u * (uint64_t)(st - RT_LIGHTTRACE + 1));
+            int where = 0;
+            double t = max_t(&r, &ref, &where);
+            printf("%s: %s vs mixture: max |t| %.2f (threshold %.2f)\n", scenes[i],
+                   rt_strategy_name((rt_strategy)st), t, thr);
+            if (t >= thr)
+                fail_msg("%s: %s disagrees with mixture in region %d: |t| %.2f >= %.2f (seed %llu)",
+                         scenes[i], rt_strategy_name((rt_strategy)st), where, t, thr,
+                         (unsigned long long)seed);
+        }
+        if (i == 0) {
+            rt_path_settings lt = rt_path_settings_default(RT_LIGHTTRACE), mis = rt_path_settings_default(RT_BDPT);
+            lt.splat_drop_cos3 = true;
+            mis.mis_double = 2;
+            regions bad1 = batched(s, cp, lt, 64, seed + 90u), bad2 = batched(s, cp, mis, 64, seed + 95u);
+            int where = 0;
+            double t1 = max_t(&bad1, &ref, &where), t2 = max_t(&bad2, &ref, &where);
+            printf("negative controls on lambert: splat without 1/cos^3: max |t| %.2f; strategy 1 "
+                   "counted twice: max |t| %.2f\n", t1, t2);
+            if (!negctl_record(nc, "light tracing without the camera importance's 1/cos^3",
+                               "region t-test", t1 >= thr))
+                fail_msg("the splat without 1/cos^3 was not caught: |t| %.2f < %.2f", t1, thr);
+            if (!negctl_record(nc, "bdpt counting next-event estimation twice", "region t-test",
+                               t2 >= thr))
+                fail_msg("the double-counted strategy was not caught: |t| %.2f < %.2f", t2, thr);
+        }
+        rt_scene_destroy(s);
+    }
+}
+
+/* The white furnace (every pixel 1 - 2^-8 at depth 8: inside the
+ * furnace no path ever leaves, and a bidirectional sample at depth 50
+ * would join some 2500 pairs of vertices) with lighttrace
+ * and bdpt, and the sphere light with both against mis (whose plane
+ * radiance test_render_integrator checks against the analytic
+ * irradiance): BATCHES renders of 8 x 8 (furnace, region = the whole
+ * image, each channel) or 24 x 24 (sphere light, 27 region-channels)
+ * pixels, 32 samples per pixel, seeds 501 and on. 2 x 3 + 2 x 27 = 60 t
+ * statistics. */
+static void test_furnace_and_sphere_light(void **state)
+{
+    (void)state;
+    uint64_t seed = mc_test_seed(501u);
+    double thr = threshold(60);
+    rt_camera_params cp;
+    rt_scene *f = rt_scene_named("furnace", &cp);
+    for (int st = RT_LIGHTTRACE; st <= RT_BDPT; st++) {
+        rt_path_settings ps = rt_path_settings_default((rt_strategy)st);
+        ps.max_depth = 8;
+        regions r = batched(f, cp, ps, 32, seed + 10u * (uint64_t)st);
+        double mean = 0.0, var = 0.0;
+        for (int k = 0; k < REGIONS; k++) {
+            mean += r.e[k][1].value / REGIONS;
+            var += r.e[k][1].std_error * r.e[k][1].std_error / (REGIONS * REGIONS);
+        }
+        double exact = rt_scene_furnace_radiance(RT_FURNACE_EMISSION, RT_FURNACE_RHO, 8);
+        double t = fabs(mean - exact) / sqrt(var);
+        printf("furnace %s: image mean %.6f +- %.6f, |t| %.2f (threshold %.2f)\n",
+               rt_strategy_name((rt_strategy)st), mean, sqrt(var), t, thr);
+        assert_true(t < thr);
+    }
+    rt_scene_destroy(f);
+    rt_scene *s = rt_scene_named("sphere-light", &cp);
+    regions ref = batched(s, cp, rt_path_settings_default(RT_MIS), 32, seed + 50u);
+    for (int st = RT_LIGHTTRACE; st <= RT_BDPT; st++) {
+        regions r = batched(s, cp, rt_path_settings_default((rt_strategy)st), 32, seed + 60u + (uint64_t)st);
+        int where = 0;
+        double t = max_t(&r, &ref, &where);
+        printf("sphere light %s vs mis: max |t| %.2f (threshold %.2f)\n", rt_strategy_name((rt_strategy)st),
+               t, thr);
+        assert_true(t < thr);
+    }
+    rt_scene_destroy(s);
+}
+
+/* Splatted images are bit-identical for 1, 2 and 3 threads (book, bdpt,
+ * and lighttrace on lambert, 16 x 16, 8 samples per pixel, a pass of 3
+ * so that passes end mid-render), and a render cancelled from its
+ * progress callback returns 1 with fewer paths than asked and a finite
+ * image. */
+static void cancel_after_first(void *ctx, const rt_progress *p)
+{
+    (void)p;
+    atomic_store((atomic_int *)ctx, 1);
+}
+
+static void test_threads_and_cancel(void **state)
+{
+    (void)state;
+    static const char *const scenes[2] = {"book", "lambert"};
+    static const rt_strategy sts[2] = {RT_BDPT, RT_LIGHTTRACE};
+    for (int i = 0; i < 2; i++) {
+        rt_camera_params cp;
+        rt_scene *s = rt_scene_named(scenes[i], &cp);
+        rt_image *img[3];
+        for (int th = 1; th <= 3; th++) {
+            img[th - 1] = rt_image_create(16, 16);
+            rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, 16, 16));
+            job.path = rt_path_settings_default(sts[i]);
+            job.spp = 8;
+            job.pass_spp = 3;
+            job.threads = th;
+            assert_int_equal(rt_render(&job, img[th - 1], NULL), 0);
+        }
+        for (int th = 1; th < 3; th++)
+            assert_memory_equal(img[0]->px, img[th]->px, 16 * 16 * sizeof(rt_pixel));
+        atomic_int cancel = 0;
+        rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, 16, 16));
+        job.path = rt_path_settings_default(sts[i]);
+        job.spp = 64;
+        job.threads = 2;
+        job.cancel = &cancel;
+        job.progress = cancel_after_first;
+        job.progress_ctx = &cancel;
+        rt_render_stats st;
+        assert_int_equal(rt_render(&job, img[0], &st), 1);
+        assert_true(st.cancelled && st.paths > 0 && st.paths < 64u * 256u);
+        for (int k = 0; k < 16 * 16; k++)
+            for (int c = 0; c < 3; c++)
+                assert_true(isfinite(img[0]->px[k].mean[c]));
+        for (int th = 0; th < 3; th++)
+            rt_image_destroy(img[th]);
+        rt_scene_destroy(s);
+    }
+}
+
+/* Bad strategy names are refused. */
+static void test_strategy_parse(void **state)
+{
+    (void)state;
+    rt_path_settings ps = rt_path_settings_default(RT_MIXTURE);
+    assert_true(rt_bdpt_strategy_parse("bdpt:2,3", &ps) && ps.strategy == RT_BDPT && ps.bdpt_s == 2 &&
+                ps.bdpt_t == 3);
+    assert_true(rt_bdpt_strategy_parse("bdpt", &ps) && ps.bdpt_s == 0 && ps.bdpt_t == 0);
+    assert_true(rt_bdpt_strategy_parse("lighttrace", &ps) && ps.strategy == RT_LIGHTTRACE);
+    static const char *const bad[] = {"bdpt:", "bdpt:1", "bdpt:1,0", "bdpt:0,1", "bdpt:-1,3",
+                                      "bdpt:1,3x", "bdpt:1, 3", "bdpt:99,1", "bdpt 1,2", "bd"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        assert_false(rt_bdpt_strategy_parse(bad[i], &ps));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_strategy_parse),
+        cmocka_unit_test(test_mis_weights_sum_to_one),
+        cmocka_unit_test(test_threads_and_cancel),
+        cmocka_unit_test(test_unweighted_strategies_agree_per_length),
+        cmocka_unit_test(test_agree_with_mixture),
+        cmocka_unit_test(test_furnace_and_sphere_light),
+    };
+    return cmocka_run_group_tests_name("test_render_bdpt", tests, negctl_group_setup,
+                                       negctl_group_teardown);
+}
