@@ -81,6 +81,7 @@ static rt_image *read_pfm(const char *path)
 /* The reference PREFIX-a.pfm and PREFIX-b.pfm as their mean; *noise
  * receives the mean's own mean squared error, MSE(a, b) / 4. NULL when
  * either cannot be read, is not square or their sizes differ. */
+/* BEGIN SNIPPET reference_noise */
 static rt_image *load_reference(const char *prefix, double *noise)
 {
     char path[4096];
@@ -105,6 +106,7 @@ static rt_image *load_reference(const char *prefix, double *noise)
     rt_image_destroy(b);
     return ref;
 }
+/* END SNIPPET reference_noise */
 
 static int cmp_desc(const void *pa, const void *pb)
 {
@@ -114,6 +116,7 @@ static int cmp_desc(const void *pa, const void *pb)
 
 /* The share of the squared error (summed over the channels) in the worst
  * 1% of the pixels, against the (noisy) reference as it is. */
+/* BEGIN SNIPPET worst_share */
 static double worst_share(const rt_image *img, const rt_image *ref)
 {
     size_t n = (size_t)img->width * (size_t)img->height, top = n / 100 > 0 ? n / 100 : 1;
@@ -131,6 +134,7 @@ static double worst_share(const rt_image *img, const rt_image *ref)
     free(e);
     return worst / all;
 }
+/* END SNIPPET worst_share */
 
 /* The error table (see the top of the file), at the reference's size.
  * The book's time is for 600 x 600 pixels; for another size it is scaled

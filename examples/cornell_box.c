@@ -168,6 +168,7 @@ static rt_image *load_reference(const options *o)
  * and the efficiency 1 / (MSE x seconds) of the render: the larger, the
  * less time to a given error (halving the MSE takes twice the samples).
  * On stderr with --csv, so that stdout stays one table. */
+/* BEGIN SNIPPET report_error */
 static void report_error(const options *o, const rt_image *img, const rt_image *ref, double seconds)
 {
     double mse = rt_image_mse(img, ref);
@@ -176,6 +177,7 @@ static void report_error(const options *o, const rt_image *img, const rt_image *
             "channels); efficiency 1/(MSE x %.3f s) = %.6g\n",
             o->reference, sqrt(mse), mse, img->width, img->height, seconds, 1.0 / (mse * seconds));
 }
+/* END SNIPPET report_error */
 
 /* The progress line: percent, elapsed, estimated time left, throughput. */
 static void show_progress(void *ctx, const rt_progress *p)

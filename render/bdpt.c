@@ -33,6 +33,7 @@ static bool camera_dir(const rt_bdpt_ctx *c, vec3 p, vec3 *dir, double *cos_thet
     return *cos_theta > 0.0;
 }
 
+/* BEGIN SNIPPET camera_importance */
 bool rt_bdpt_camera_importance(const rt_bdpt_ctx *c, vec3 p, size_t *px, double *importance)
 {
     vec3 dir;
@@ -52,6 +53,7 @@ bool rt_bdpt_camera_importance(const rt_bdpt_ctx *c, vec3 p, size_t *px, double 
     *importance = 1.0 / (c->pixel_area * cos3);
     return true;
 }
+/* END SNIPPET camera_importance */
 
 /* --- densities of the joined path ------------------------------------- */
 
@@ -132,6 +134,7 @@ static double remap0(double p) { return p != 0.0 ? p : 1.0; }
  * (remapped), ok[r] whether strategy r can join. Strategy r + 1 differs
  * from r in making x[r] from the light side, so p_{r+1} / p_r =
  * pl[r] / pc[r]; the weight is 1 / sum_r (p_r / p_s)^2, in O(n). */
+/* BEGIN SNIPPET bdpt_weight */
 static double weight_from(const double *pl, const double *pc, bool *ok, int n, int s, int twice,
                           bool x1_specular)
 {
@@ -165,6 +168,7 @@ static double weight_from(const double *pl, const double *pc, bool *ok, int n, i
     }
     return 1.0 / sum;
 }
+/* END SNIPPET bdpt_weight */
 
 double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, int s)
 {
@@ -410,6 +414,7 @@ static bool visible(const rt_scene *s, vec3 a, vec3 b, uint64_t *segments)
 
 /* The unweighted contribution of strategy (s, t) with t >= 2 (s = 0: the
  * camera subpath's own hit on an emitter). */
+/* BEGIN SNIPPET bdpt_join */
 static vec3 join(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam,
                  int t, uint64_t *segments)
 {
@@ -429,9 +434,11 @@ static vec3 join(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s, const
         return zero;
     return vec3_scale(vec3_mul(vec3_mul(y->beta, fy), vec3_mul(z->beta, fz)), g);
 }
+/* END SNIPPET bdpt_join */
 
 /* Strategy (s, 1): the light subpath's end seen by the camera, splatted
  * with the camera importance (and weight w_fn's weight). */
+/* BEGIN SNIPPET bdpt_splat */
 static void splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s,
                             const rt_bdpt_vertex *cam0, const subpath_pdfs *sp, double *splat,
                             uint64_t *segments)
@@ -460,7 +467,9 @@ static void splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, i
     splat[3 * px + 1] += v.y;
     splat[3 * px + 2] += v.z;
 }
+/* END SNIPPET bdpt_splat */
 
+/* BEGIN SNIPPET bdpt_strategies */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, double *splat,
                     uint64_t *segments)
 {
@@ -500,6 +509,7 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
         }
     return L;
 }
+/* END SNIPPET bdpt_strategies */
 
 bool rt_bdpt_strategy_parse(const char *name, rt_path_settings *ps)
 {

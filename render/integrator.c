@@ -83,10 +83,12 @@ static void lights_prepare(lights_at *a, const rt_scene *s, const rt_path_settin
  * alone (rt_scene_emitters), for the light strategy the whole light list
  * (which keeps its images as they were; it aims at the book's glass
  * sphere for nothing). */
+/* BEGIN SNIPPET nee_emitters */
 static int nee_count(const rt_scene *s, const rt_path_settings *ps)
 {
     return ps->strategy == RT_MIS ? rt_scene_emitter_count(s) : rt_scene_light_count(s);
 }
+/* END SNIPPET nee_emitters */
 
 /* lights_prepare of those lights (nee_count(s, ps) >= 1). */
 static void nee_prepare(lights_at *a, const rt_scene *s, const rt_path_settings *ps, vec3 p)

@@ -88,6 +88,7 @@ static bool splat_pass(const rt_render_job *job, const rt_bdpt_ctx *ctx, rt_imag
 }
 
 /* Adds the buffers, in order, to the pixels: splat / n_light each. */
+/* BEGIN SNIPPET splat_reduce */
 static void reduce(rt_image *img, const double *splat, int nb, uint64_t n_light)
 {
     size_t npix = (size_t)img->width * (size_t)img->height;
@@ -101,6 +102,7 @@ static void reduce(rt_image *img, const double *splat, int nb, uint64_t n_light)
             px->mean[ch] += n_light ? sum[ch] / (double)n_light : 0.0;
     }
 }
+/* END SNIPPET splat_reduce */
 
 int rt_splat_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
 {
