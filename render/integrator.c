@@ -68,13 +68,18 @@ typedef struct lights_at {
     const pdf *ptrs[RT_MAX_LIGHTS];
 } lights_at;
 
-/* The light list from p (the scene has at least one light). Prepared
- * once per hit point: the draw and the density there share it. */
-static void lights_prepare(lights_at *a, const rt_scene *s, const rt_path_settings *ps, vec3 p)
+/* The light list from p, or its emitters alone when `emitters` is set
+ * (the list, or its emitters, is not empty). Prepared once per hit point:
+ * the draw and the density there share it. */
+static void lights_prepare(lights_at *a, const rt_scene *s, const rt_path_settings *ps, vec3 p,
+                           bool emitters)
 {
     a->objects = ps->pdf_objects;
     if (a->objects)
-        a->list = rt_scene_lights_pdf(s, p, a->items, a->ptrs);
+        a->list = emitters ? rt_scene_emitters_pdf(s, p, a->items, a->ptrs)
+                           : rt_scene_lights_pdf(s, p, a->items, a->ptrs);
+    else if (emitters)
+        rt_lights_prepare(&a->cache, rt_scene_emitters(s), rt_scene_emitter_count(s), p);
     else
         rt_lights_prepare(&a->cache, rt_scene_lights(s), rt_scene_light_count(s), p);
 }
@@ -84,25 +89,13 @@ static void lights_prepare(lights_at *a, const rt_scene *s, const rt_path_settin
  * (which keeps its images as they were; it aims at the book's glass
  * sphere for nothing). */
 /* BEGIN SNIPPET nee_emitters */
+static bool nee_emitters_only(const rt_path_settings *ps) { return ps->strategy == RT_MIS; }
+
 static int nee_count(const rt_scene *s, const rt_path_settings *ps)
 {
-    return ps->strategy == RT_MIS ? rt_scene_emitter_count(s) : rt_scene_light_count(s);
+    return nee_emitters_only(ps) ? rt_scene_emitter_count(s) : rt_scene_light_count(s);
 }
 /* END SNIPPET nee_emitters */
-
-/* lights_prepare of those lights (nee_count(s, ps) >= 1). */
-static void nee_prepare(lights_at *a, const rt_scene *s, const rt_path_settings *ps, vec3 p)
-{
-    if (ps->strategy != RT_MIS) {
-        lights_prepare(a, s, ps, p);
-        return;
-    }
-    a->objects = ps->pdf_objects;
-    if (a->objects)
-        a->list = rt_scene_emitters_pdf(s, p, a->items, a->ptrs);
-    else
-        rt_lights_prepare(&a->cache, rt_scene_emitters(s), rt_scene_emitter_count(s), p);
-}
 
 /* A direction toward the lights (pdf_generate of the list). The pdf
  * objects draw from a PCG32 stream, the pixel's, whatever the sampler:
@@ -153,7 +146,7 @@ static double mixture_sample(const rt_scene *s, const rt_path_settings *ps, cons
                              const rt_scatter *sr, rt_sampler *sampler, vec3 *dir)
 {
     lights_at lights;
-    lights_prepare(&lights, s, ps, h->p);
+    lights_prepare(&lights, s, ps, h->p, false);
     *dir = rt_sampler_1d(sampler) < mixture_weights[0] ? lights_generate(&lights, sampler)
                                                        : material_generate(sr, sampler);
     return mixture_density(ps, sr, *dir, lights_value(&lights, *dir));
@@ -338,7 +331,7 @@ static double continued_weight(const rt_scene *s, const rt_path_settings *ps, ve
     if (nee_count(s, ps) == 0)
         return 1.0;
     lights_at lights;
-    nee_prepare(&lights, s, ps, from);
+    lights_prepare(&lights, s, ps, from, nee_emitters_only(ps));
     double pl = lights_value(&lights, dir) * ps->light_pdf_scale;
     if (ps->strategy == RT_LIGHT)
         return pl > 0.0 ? 0.0 : 1.0;
@@ -357,7 +350,7 @@ static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt
     if (nee_count(s, ps) == 0)
         return zero;
     lights_at lights;
-    nee_prepare(&lights, s, ps, h->p);
+    lights_prepare(&lights, s, ps, h->p, nee_emitters_only(ps));
     vec3 dir = lights_generate(&lights, sampler);
     double pl = lights_value(&lights, dir) * ps->light_pdf_scale;
     double sp = rt_material_scattering_pdf(m, h, dir);
