@@ -8,6 +8,7 @@
 
 #include "mc/constants.h"
 #include "mc/onb.h"
+#include "render/jitter.h"
 #include "render/lights.h"
 #include "samplers/sphere.h"
 
@@ -152,6 +153,14 @@ static double weight_from(const double *pl, const double *pc, bool *ok, int n, i
                 ok[0] = false;
                 break;
             }
+    /* The other way round for an emitter the camera sees directly (n = 2):
+     * the camera ray finds it every time, each pixel sample adding its
+     * exact radiance, while a light subpath's start lands in a random
+     * pixel; the densities, which say nothing of that, favour the splats
+     * because there are more light starts on the lamp than camera rays.
+     * Such a path goes to s = 0 alone. */
+    if (n == 2 && ok[0])
+        ok[1] = false;
     if (!ok[s])
         return 0.0;
     double sum = s == twice ? 2.0 : 1.0, ratio = 1.0;
@@ -469,6 +478,111 @@ static void splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, i
 }
 /* END SNIPPET bdpt_splat */
 
+/* --- what the camera sees through glass and mirrors ------------------- */
+
+/* The vertices a chain of rt_bdpt_seen_emission goes on through: glass
+ * and perfect mirrors. */
+static bool chain_material(const rt_material *m)
+{
+    return m && (m->kind == RT_MAT_DIELECTRIC || (m->kind == RT_MAT_METAL && m->fuzz == 0.0));
+}
+
+/* Whether the camera subpath cam[0..t) is a chain: its vertices between
+ * the camera and the last are all glass or perfect mirrors. */
+static bool seen_chain(const rt_bdpt_vertex *cam, int t)
+{
+    for (int j = 1; j < t - 1; j++)
+        if (!chain_material(cam[j].m))
+            return false;
+    return true;
+}
+
+/* rt_bdpt_seen_emission with `left` segments and `splits` splits to go. */
+/* BEGIN SNIPPET bdpt_seen */
+static vec3 seen(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, mc_rng *rng,
+                 uint64_t *segments)
+{
+    vec3 zero = vec3_make(0.0, 0.0, 0.0);
+    rt_hit h;
+    if (left < 1)
+        return zero;
+    ++*segments;
+    if (!rt_scene_hit(c->scene, r, HUGE_VAL, &h))
+        return zero;
+    const rt_material *m = rt_scene_material(c->scene, h.material);
+    vec3 e = rt_material_emitted(m, &h);
+    if (!chain_material(m))
+        return e;
+    vec3 more;
+    if (m->kind == RT_MAT_METAL) {
+        more = seen(c, rt_ray_make(h.p, rt_reflect(r.dir, h.normal)), left - 1, splits, rng, segments);
+    } else {
+        rt_ray refl, refr;
+        double R = rt_glass_branches(m, &r, &h, &refl, &refr);
+        if (R >= 1.0)
+            more = seen(c, refl, left - 1, splits, rng, segments);
+        else if (splits > 0)
+            more = vec3_add(vec3_scale(seen(c, refl, left - 1, splits - 1, rng, segments), R),
+                            vec3_scale(seen(c, refr, left - 1, splits - 1, rng, segments), 1.0 - R));
+        else
+            more = seen(c, mc_rng_uniform(rng) < R ? refl : refr, left - 1, 0, rng, segments);
+    }
+    return vec3_add(e, vec3_mul(m->albedo, more));
+}
+/* END SNIPPET bdpt_seen */
+
+vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t *segments)
+{
+    int depth = c->ps->max_depth < RT_BDPT_MAX_DEPTH ? c->ps->max_depth : RT_BDPT_MAX_DEPTH;
+    return seen(c, r, depth, RT_BDPT_SPLITS, rng, segments);
+}
+
+/* The streams of the term: one per pixel for the edge test, one per
+ * pixel sample (keys apart from the pixels' own streams, which are
+ * mc_rng_derive(seed, pixel)). */
+#define SEEN_EDGE_KEY 0x5ee9ed9e5ee9ed9eull
+#define SEEN_SAMPLE_KEY 0x5ee95a3b1e5ee95aull
+
+bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64_t *segments)
+{
+    const rt_camera *cam = c->camera;
+    mc_rng rng = mc_rng_derive(seed ^ SEEN_EDGE_KEY, (uint64_t)y * (uint64_t)cam->width + (uint64_t)x);
+    vec3 lo = vec3_make(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi = vec3_scale(lo, -1.0);
+    for (int j = 0; j <= 2; j++)
+        for (int i = 0; i <= 2; i++) {
+            /* The far corners are inside the pixel by an ulp's worth. */
+            double px = fmin((double)x + 0.5 * i, nextafter((double)x + 1.0, 0.0));
+            double py = fmin((double)y + 0.5 * j, nextafter((double)y + 1.0, 0.0));
+            vec3 v = rt_bdpt_seen_emission(c, rt_camera_ray(cam, px, py), &rng, segments);
+            lo = vec3_make(fmin(lo.x, v.x), fmin(lo.y, v.y), fmin(lo.z, v.z));
+            hi = vec3_make(fmax(hi.x, v.x), fmax(hi.y, v.y), fmax(hi.z, v.z));
+        }
+    return hi.x - lo.x > 0.01 || hi.y - lo.y > 0.01 || hi.z - lo.z > 0.01;
+}
+
+/* BEGIN SNIPPET bdpt_seen_sample */
+vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, uint64_t seed,
+                         uint64_t sample, uint64_t *segments)
+{
+    mc_rng rng = mc_rng_derive(seed ^ SEEN_SAMPLE_KEY, sample);
+    if (!edge)
+        return rt_bdpt_seen_emission(c, r, &rng, segments);
+    /* One jittered ray in each cell of a g x g grid: the mean over the
+     * cells of stratified points, unbiased for the pixel's mean. */
+    enum { g = 8 };
+    _Static_assert(g * g == RT_BDPT_EDGE_SUBSAMPLES, "the grid is RT_BDPT_EDGE_SUBSAMPLES cells");
+    vec3 sum = vec3_make(0.0, 0.0, 0.0);
+    for (int j = 0; j < g; j++)
+        for (int i = 0; i < g; i++) {
+            double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng);
+            rt_ray sub = rt_camera_ray(c->camera, (double)x + rt_jitter_in_cell((uint64_t)i, g, u1),
+                                       (double)y + rt_jitter_in_cell((uint64_t)j, g, u2));
+            sum = vec3_add(sum, rt_bdpt_seen_emission(c, sub, &rng, segments));
+        }
+    return vec3_scale(sum, 1.0 / (g * g));
+}
+/* END SNIPPET bdpt_seen_sample */
+
 /* BEGIN SNIPPET bdpt_strategies */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, double *splat,
                     uint64_t *segments)
@@ -477,7 +591,7 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
     int depth = ps->max_depth < RT_BDPT_MAX_DEPTH ? ps->max_depth : RT_BDPT_MAX_DEPTH;
     rt_bdpt_vertex cam[RT_BDPT_MAX_DEPTH + 1], light[RT_BDPT_MAX_DEPTH];
     bool lighttrace = ps->strategy == RT_LIGHTTRACE;
-    bool all = !lighttrace && ps->bdpt_s == 0 && ps->bdpt_t == 0;
+    bool all = rt_bdpt_weighted(ps);
     cam[0] = (rt_bdpt_vertex){RT_BDPT_CAMERA, c->camera->origin, c->forward, c->forward, true,
                               false, NULL, -1, vec3_make(1.0, 1.0, 1.0)};
     vec3 L = vec3_make(0.0, 0.0, 0.0);
@@ -494,12 +608,17 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
         for (int s = 0; s <= nl; s++) {
             if (s + t < 2 || s + t - 1 > depth || (t == 1 && s == 0))
                 continue;
+            /* (1, 1), a lamp seen directly, has weight 0 (weight_from). */
+            if (all && s == 1 && t == 1)
+                continue;
             if (!all && !lighttrace && (s != ps->bdpt_s || t != ps->bdpt_t))
                 continue;
             if (t == 1) {
                 splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, splat, segments);
                 continue;
             }
+            if (all && s == 0 && !ps->seen_twice && seen_chain(cam, t))
+                continue; /* rt_bdpt_seen_sample's */
             vec3 v = join(c, light, s, cam, t, segments);
             if (is_black(v))
                 continue;

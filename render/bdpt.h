@@ -96,6 +96,13 @@ rt_bdpt_ctx rt_bdpt_ctx_make(const rt_scene *scene, const rt_path_settings *ps,
  * for the direction toward p; false when p is outside the view. */
 bool rt_bdpt_camera_importance(const rt_bdpt_ctx *c, vec3 p, size_t *px, double *importance);
 
+/* Whether ps asks for every strategy weighted (RT_BDPT, no single
+ * (bdpt_s, bdpt_t) chosen). */
+static inline bool rt_bdpt_weighted(const rt_path_settings *ps)
+{
+    return ps->strategy == RT_BDPT && ps->bdpt_s == 0 && ps->bdpt_t == 0;
+}
+
 /* The power-heuristic weight of strategy s (s light vertices, n - s
  * camera vertices) for the joined path x[0..n) (x[0] on an emitter or
  * wherever the camera subpath ended, x[n-1] the camera), 2 <= n,
@@ -111,9 +118,58 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
  * and no camera subpath). Returns the radiance of the strategies with
  * t >= 2 for this pixel; adds those with t = 1, times the camera
  * importance, to splat[3 j .. 3 j + 3) of the pixel j they are seen in.
- * Draws from sampler; adds the rays traced to *segments. */
+ * With every strategy weighted, the paths E S* L (see below) are left
+ * out: rt_bdpt_seen_sample estimates them. Draws from sampler; adds the
+ * rays traced to *segments. */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, double *splat,
                     uint64_t *segments);
+
+/* --- what the camera sees through glass and mirrors ------------------- *
+ *
+ * The paths E S* L (the camera, then nothing but glass and perfect
+ * mirrors, then an emitter: the lamp itself, its image in the glass
+ * sphere) can be made by one strategy only, s = 0, and two things make
+ * that strategy noisy although nothing about such a path is hard to find:
+ * the choice between reflection and refraction at each glass hit (the
+ * lamp's image in the sphere is bright in the samples that reflect and
+ * dark in the others), and the edge of the lamp or of its image inside a
+ * pixel (15 against 0.1 in the book scene: a pixel sample lands on one
+ * side or the other). The weighted render therefore takes these paths
+ * out of rt_bdpt_sample and estimates them apart:
+ *   - at glass, both branches are followed, weighted by the Fresnel
+ *     reflectance R and 1 - R (splitting), for the first RT_BDPT_SPLITS
+ *     glass hits of a chain; past them one branch is drawn with its
+ *     probability, as rt_material_scatter draws it;
+ *   - a pixel at an edge (rt_bdpt_seen_edge) takes RT_BDPT_EDGE_SUBSAMPLES
+ *     camera rays, one in each cell of a jittered grid, per pixel sample
+ *     for this term alone; any other pixel takes the sample's own ray.
+ * Which pixels count as edges changes how many rays the term takes, not
+ * what it estimates: every pixel sample's term is an unbiased estimate of
+ * the pixel's mean of it, so the partition (these paths here, all others
+ * in rt_bdpt_sample) keeps the sum unbiased. */
+#define RT_BDPT_SPLITS 4
+#define RT_BDPT_EDGE_SUBSAMPLES 64 /* an 8 x 8 grid */
+
+/* The radiance that the camera ray r finds on an emitter's emitting side
+ * directly or through glass and perfect mirrors (metal of fuzz 0) alone,
+ * within the render's max_depth segments (at most RT_BDPT_MAX_DEPTH),
+ * splitting at glass as above; the draws past the splits come from rng.
+ * Adds the rays traced to *segments. */
+vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t *segments);
+
+/* Whether pixel (x, y) is an edge for rt_bdpt_seen_emission: its values
+ * at the nine points of a 3 x 3 grid over the pixel (corners, edge
+ * midpoints, centre; draws from a stream keyed by seed and the pixel)
+ * differ by more than 0.01 in some channel. */
+bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64_t *segments);
+
+/* The term for one sample of pixel (x, y) whose camera ray is r:
+ * rt_bdpt_seen_emission(r), or at an edge pixel its mean over
+ * RT_BDPT_EDGE_SUBSAMPLES jittered rays of the pixel; the draws come from
+ * a stream keyed by seed and `sample` (a number no other sample of the
+ * render uses). */
+vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, uint64_t seed,
+                         uint64_t sample, uint64_t *segments);
 
 /* Parses "bdpt" (every strategy, weighted), "bdpt:S,T" (one strategy,
  * unweighted: S >= 0, T >= 1, S + T >= 2) or "lighttrace" into ps, or any

@@ -76,9 +76,12 @@ typedef struct rt_path_settings {
     int bdpt_s, bdpt_t;
     /* Negative-control hooks of render/bdpt.h, off (0) in a correct
      * renderer: splats without the 1 / cos^3 of the camera importance;
-     * strategy mis_double - 1 counted twice in the MIS weights' sum. */
+     * strategy mis_double - 1 counted twice in the MIS weights' sum; the
+     * paths E S* L kept in the weighted sum although rt_bdpt_seen_sample
+     * adds them too. */
     bool splat_drop_cos3;
     int mis_double;
+    bool seen_twice;
 } rt_path_settings;
 
 /* Book defaults: the given strategy, max depth 50, no roulette

@@ -16,17 +16,25 @@ typedef struct lane_totals {
 
 /* Samples [k0, k1) of every pixel of row y; the splats go to splat. */
 static void splat_row(const rt_render_job *job, const rt_bdpt_ctx *ctx, rt_image *img,
-                      mc_rng *streams, const rt_jitter *jt, int y, uint64_t k0, uint64_t k1,
-                      rt_cell c0, double *splat, lane_totals *lt)
+                      mc_rng *streams, bool *edges, const rt_jitter *jt, int y, uint64_t k0,
+                      uint64_t k1, rt_cell c0, double *splat, lane_totals *lt)
 {
     int w = img->width;
+    bool weighted = rt_bdpt_weighted(&job->path);
     for (int x = 0; x < w; x++) {
         size_t idx = (size_t)y * (size_t)w + (size_t)x;
         rt_sampler sampler = rt_render_sampler(job, streams[idx], idx);
         rt_cell c = c0;
+        /* The weighted sum leaves out the paths E S* L: the seen term
+         * (render/bdpt.h), for which the first pass finds the edges. */
+        if (weighted && k0 == 0)
+            edges[idx] = rt_bdpt_seen_edge(ctx, x, y, job->seed, &lt->segments);
         for (uint64_t k = k0; k < k1; k++) {
             rt_ray r = rt_sample_ray(&job->camera, jt, x, y, k, &c, &sampler);
             vec3 L = rt_bdpt_sample(ctx, r, &sampler, splat, &lt->segments);
+            if (weighted)
+                L = vec3_add(L, rt_bdpt_seen_sample(ctx, x, y, edges[idx], r, job->seed,
+                                                    (uint64_t)idx * job->spp + k, &lt->segments));
             if (!rt_pixel_add(&img->px[idx], L))
                 lt->dropped++;
         }
@@ -59,7 +67,7 @@ static void progress(const rt_render_job *job, const lane_totals *lanes, int nb,
 /* One pass: samples [k0, k1) of every pixel; buffer b renders rows b,
  * b + nb, ... in order. Returns whether the cancel flag stopped it. */
 static bool splat_pass(const rt_render_job *job, const rt_bdpt_ctx *ctx, rt_image *img,
-                       mc_rng *streams, const rt_jitter *jt, uint64_t k0, uint64_t k1, double *splat,
+                       mc_rng *streams, bool *edges, const rt_jitter *jt, uint64_t k0, uint64_t k1, double *splat,
                        lane_totals *lanes, int nb)
 {
     rt_cell c0 = rt_jitter_cell(jt, k0);
@@ -76,7 +84,7 @@ static bool splat_pass(const rt_render_job *job, const rt_bdpt_ctx *ctx, rt_imag
                 break;
             }
             lane_totals lt = lanes[b];
-            splat_row(job, ctx, img, streams, jt, y, k0, k1, c0, splat + (size_t)b * 3 * npix, &lt);
+            splat_row(job, ctx, img, streams, edges, jt, y, k0, k1, c0, splat + (size_t)b * 3 * npix, &lt);
 #pragma omp atomic write
             lanes[b].paths = lt.paths;
 #pragma omp atomic write
@@ -114,10 +122,12 @@ int rt_splat_render(const rt_render_job *job, rt_image *img, rt_render_stats *st
     size_t npix = (size_t)img->width * (size_t)img->height;
     int nb = img->height < RT_SPLAT_BUFFERS ? img->height : RT_SPLAT_BUFFERS;
     mc_rng *streams = malloc(npix * sizeof *streams);
+    bool *edges = calloc(npix, sizeof *edges);
     double *splat = calloc((size_t)nb * 3 * npix, sizeof *splat);
     lane_totals *lanes = calloc((size_t)nb, sizeof *lanes);
-    if (!streams || !splat || !lanes) {
+    if (!streams || !edges || !splat || !lanes) {
         free(streams);
+        free(edges);
         free(splat);
         free(lanes);
         return -1;
@@ -134,7 +144,7 @@ int rt_splat_render(const rt_render_job *job, rt_image *img, rt_render_stats *st
     double t0 = omp_get_wtime();
     for (uint64_t p = 0, k0 = 0; p < passes && !cancelled; p++) {
         uint64_t k1 = k0 + base + (p < extra ? 1 : 0);
-        cancelled = splat_pass(job, &ctx, img, streams, &jt, k0, k1, splat, lanes, nb);
+        cancelled = splat_pass(job, &ctx, img, streams, edges, &jt, k0, k1, splat, lanes, nb);
         k0 = k1;
     }
     lane_totals tot = {0, 0, 0};
@@ -146,6 +156,7 @@ int rt_splat_render(const rt_render_job *job, rt_image *img, rt_render_stats *st
     /* Every pixel sample traced one light subpath. */
     reduce(img, splat, nb, tot.paths);
     free(streams);
+    free(edges);
     free(splat);
     free(lanes);
     if (stats) {

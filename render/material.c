@@ -130,40 +130,77 @@ double rt_fresnel_schlick_book(double cos_i, double n1, double n2)
  * reflection (transmitted_cos_eta's test); the exactly grazing 1 refracts
  * along the surface in rt_refract (cos theta_t = sqrt(0) = 0), hence the
  * 0 there. */
-/* BEGIN SNIPPET scatter_glass */
-static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *h,
-                          rt_sampler *sampler, rt_scatter *s)
+/* What both branches at a glass hit need: the incident direction and
+ * normal, d . n, cos theta_i, eta, sin^2 theta_t, cos theta_t, and the
+ * reflectance r. */
+typedef struct glass_hit {
+    vec3 d, n;
+    double d_n, cos_i, eta, sin2_t, cos_t, r;
+} glass_hit;
+
+static glass_hit glass_at(const rt_material *m, const rt_ray *in, const rt_hit *h)
 {
+    glass_hit g;
     double n1 = h->front_face ? 1.0 : m->ior, n2 = h->front_face ? m->ior : 1.0;
-    double eta = h->front_face ? m->inv_ior : m->ior; /* n1 / n2 exactly (ior / 1 = ior) */
-    vec3 d = in->dir, n = h->normal;
-    double d_n = vec3_dot(d, n);
-    double cos_i = -d_n;
-    cos_i = cos_i < 1.0 ? cos_i : 1.0; /* fmin, as in rt_refract */
-    double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
-    double cos_t = sin2_t >= 1.0 ? 0.0 : sqrt(1.0 - sin2_t);
-    double r;
+    g.eta = h->front_face ? m->inv_ior : m->ior; /* n1 / n2 exactly (ior / 1 = ior) */
+    g.d = in->dir;
+    g.n = h->normal;
+    g.d_n = vec3_dot(g.d, g.n);
+    g.cos_i = -g.d_n;
+    g.cos_i = g.cos_i < 1.0 ? g.cos_i : 1.0; /* fmin, as in rt_refract */
+    g.sin2_t = g.eta * g.eta * (1.0 - g.cos_i * g.cos_i);
+    g.cos_t = g.sin2_t >= 1.0 ? 0.0 : sqrt(1.0 - g.sin2_t);
     if (m->fresnel == RT_FRESNEL_EXACT)
-        r = rt_fresnel_exact(cos_i, n1, n2);
+        g.r = rt_fresnel_exact(g.cos_i, n1, n2);
     else if (n1 <= n2)
-        r = schlick(m->schlick_r0, cos_i);
+        g.r = schlick(m->schlick_r0, g.cos_i);
     else
-        r = sin2_t >= 1.0 ? 1.0 : schlick(m->schlick_r0, cos_t);
+        g.r = g.sin2_t >= 1.0 ? 1.0 : schlick(m->schlick_r0, g.cos_t);
+    return g;
+}
+
+/* The reflected or the refracted ray of a glass hit at p. */
+static rt_ray glass_ray(const glass_hit *g, vec3 p, bool reflect)
+{
     vec3 dir;
-    if (r >= 1.0 || rt_sampler_1d(sampler) < r || sin2_t > 1.0)
-        dir = vec3_madd(d, n, -2.0 * d_n); /* rt_reflect */
+    if (reflect)
+        dir = vec3_madd(g->d, g->n, -2.0 * g->d_n); /* rt_reflect */
     else /* rt_refract: Snell for the tangential part, Pythagoras for the normal one */
-        dir = vec3_madd(vec3_scale(vec3_madd(d, n, cos_i), eta), n, -cos_t);
-    s->specular = true;
-    s->attenuation = m->albedo;
+        dir = vec3_madd(vec3_scale(vec3_madd(g->d, g->n, g->cos_i), g->eta), g->n, -g->cos_t);
     /* Both directions are unit but for rounding, |dir|^2 = 1 + e with e of
      * a few ulps: one Newton step for 1 / |dir|, x (3 - |x|^2) / 2, leaves
      * |dir|^2 = 1 - 3e^2/4 + rounding, as unit as a division by the square
      * root would, without a square root and a division in the chain of a
      * path that is inside glass every few segments. */
-    s->ray = rt_ray_make(h->p, vec3_scale(dir, 1.5 - 0.5 * vec3_length_sq(dir)));
+    return rt_ray_make(p, vec3_scale(dir, 1.5 - 0.5 * vec3_length_sq(dir)));
+}
+
+/* Total internal reflection (sin^2 theta_t > 1) or a reflectance of 1
+ * leaves only the reflected branch. */
+static bool glass_reflects_only(const glass_hit *g) { return g->r >= 1.0 || g->sin2_t > 1.0; }
+
+/* BEGIN SNIPPET scatter_glass */
+static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *h,
+                          rt_sampler *sampler, rt_scatter *s)
+{
+    glass_hit g = glass_at(m, in, h);
+    bool reflect = g.r >= 1.0 || rt_sampler_1d(sampler) < g.r || g.sin2_t > 1.0;
+    s->specular = true;
+    s->attenuation = m->albedo;
+    s->ray = glass_ray(&g, h->p, reflect);
 }
 /* END SNIPPET scatter_glass */
+
+double rt_glass_branches(const rt_material *m, const rt_ray *in, const rt_hit *h, rt_ray *reflected,
+                         rt_ray *refracted)
+{
+    glass_hit g = glass_at(m, in, h);
+    *reflected = glass_ray(&g, h->p, true);
+    if (glass_reflects_only(&g))
+        return 1.0;
+    *refracted = glass_ray(&g, h->p, false);
+    return g.r;
+}
 
 bool rt_material_scatter_specular(const rt_material *m, const rt_ray *in, const rt_hit *h,
                                   rt_sampler *sampler, rt_scatter *s)

@@ -117,6 +117,15 @@ static inline double rt_material_scattering_pdf(const rt_material *m, const rt_h
     return c > 0.0 ? c * MC_INV_PI : 0.0;
 }
 
+/* Both branches of the ray *in meeting glass m at h, for a caller that
+ * follows both instead of drawing one (splitting): returns the Fresnel
+ * reflectance R in [0, 1], the probability with which
+ * rt_material_scatter reflects, and sets *reflected and, when R < 1,
+ * *refracted to the rays it would send (the same bits). Each branch's
+ * weight is then the material's albedo times R or 1 - R. */
+double rt_glass_branches(const rt_material *m, const rt_ray *in, const rt_hit *h, rt_ray *reflected,
+                         rt_ray *refracted);
+
 /* Mirror direction of d about the unit normal n: d - 2 (d . n) n. */
 vec3 rt_reflect(vec3 d, vec3 n);
 
