@@ -487,20 +487,74 @@ static bool chain_material(const rt_material *m)
     return m && (m->kind == RT_MAT_DIELECTRIC || (m->kind == RT_MAT_METAL && m->fuzz == 0.0));
 }
 
-/* Whether the camera subpath cam[0..t) is a chain: its vertices between
- * the camera and the last are all glass or perfect mirrors. */
-static bool seen_chain(const rt_bdpt_vertex *cam, int t)
+/* Whether the camera vertices cam[from..to) are all glass or perfect
+ * mirrors. */
+static bool all_chain(const rt_bdpt_vertex *cam, int from, int to)
 {
-    for (int j = 1; j < t - 1; j++)
+    for (int j = from; j < to; j++)
         if (!chain_material(cam[j].m))
             return false;
     return true;
 }
 
-/* rt_bdpt_seen_emission with `left` segments and `splits` splits to go. */
+/* The index jd of the Lambertian vertex D of the camera subpath
+ * cam[0..nc) that follows one or more glass or mirror vertices right
+ * after the camera (camera, glass, glass, D: the floor seen through the
+ * sphere), or 0 if it has none. */
+static int through_vertex(const rt_bdpt_vertex *cam, int nc)
+{
+    int j = 1;
+    while (j < nc && chain_material(cam[j].m))
+        j++;
+    return j >= 2 && j < nc && cam[j].m && cam[j].m->kind == RT_MAT_LAMBERT ? j : 0;
+}
+
+/* Whether the path of s = 0 that ends at camera vertex t - 1 (an emitter)
+ * is one the weighted render estimates apart: E S* L (the vertices
+ * between the camera and the emitter are all glass or mirrors), or
+ * E S+ D S+ L with D = cam[jd] (through_vertex; jd = 0 for none). */
+static bool estimated_apart(const rt_bdpt_vertex *cam, int t, int jd)
+{
+    if (all_chain(cam, 1, t - 1))
+        return true;
+    return jd > 0 && t - 1 >= jd + 2 && all_chain(cam, jd + 1, t - 1);
+}
+
 /* BEGIN SNIPPET bdpt_seen */
 static vec3 seen(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, mc_rng *rng,
-                 uint64_t *segments)
+                 uint64_t *segments);
+
+/* What comes back to the ray r that met the glass or mirror m at h, with
+ * `left` segments (this one included) and `splits` splits to go: the
+ * albedo times seen() along the reflection, or at glass along both
+ * branches weighted by R and 1 - R, or along one drawn with those
+ * probabilities once the splits are spent. */
+static vec3 through_chain_vertex(const rt_bdpt_ctx *c, rt_ray r, const rt_hit *h,
+                                 const rt_material *m, int left, int splits, mc_rng *rng,
+                                 uint64_t *segments)
+{
+    vec3 more;
+    if (m->kind == RT_MAT_METAL) {
+        more = seen(c, rt_ray_make(h->p, rt_reflect(r.dir, h->normal)), left - 1, splits, rng, segments);
+    } else {
+        rt_ray refl, refr;
+        double R = rt_glass_branches(m, &r, h, &refl, &refr);
+        if (R >= 1.0)
+            more = seen(c, refl, left - 1, splits, rng, segments);
+        else if (splits > 0)
+            more = vec3_add(vec3_scale(seen(c, refl, left - 1, splits - 1, rng, segments), R),
+                            vec3_scale(seen(c, refr, left - 1, splits - 1, rng, segments), 1.0 - R));
+        else
+            more = seen(c, mc_rng_uniform(rng) < R ? refl : refr, left - 1, 0, rng, segments);
+    }
+    return vec3_mul(m->albedo, more);
+}
+
+/* rt_bdpt_seen_emission with `left` segments and `splits` splits to go;
+ * through_only: only what comes through a glass or mirror vertex first
+ * (the emitter met first is left out). */
+static vec3 seen_any(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, bool through_only,
+                     mc_rng *rng, uint64_t *segments)
 {
     vec3 zero = vec3_make(0.0, 0.0, 0.0);
     rt_hit h;
@@ -510,38 +564,59 @@ static vec3 seen(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, mc_rng *r
     if (!rt_scene_hit(c->scene, r, HUGE_VAL, &h))
         return zero;
     const rt_material *m = rt_scene_material(c->scene, h.material);
-    vec3 e = rt_material_emitted(m, &h);
+    vec3 e = through_only ? zero : rt_material_emitted(m, &h);
     if (!chain_material(m))
         return e;
-    vec3 more;
-    if (m->kind == RT_MAT_METAL) {
-        more = seen(c, rt_ray_make(h.p, rt_reflect(r.dir, h.normal)), left - 1, splits, rng, segments);
-    } else {
-        rt_ray refl, refr;
-        double R = rt_glass_branches(m, &r, &h, &refl, &refr);
-        if (R >= 1.0)
-            more = seen(c, refl, left - 1, splits, rng, segments);
-        else if (splits > 0)
-            more = vec3_add(vec3_scale(seen(c, refl, left - 1, splits - 1, rng, segments), R),
-                            vec3_scale(seen(c, refr, left - 1, splits - 1, rng, segments), 1.0 - R));
-        else
-            more = seen(c, mc_rng_uniform(rng) < R ? refl : refr, left - 1, 0, rng, segments);
-    }
-    return vec3_add(e, vec3_mul(m->albedo, more));
+    return vec3_add(e, through_chain_vertex(c, r, &h, m, left, splits, rng, segments));
+}
+
+static vec3 seen(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, mc_rng *rng,
+                 uint64_t *segments)
+{
+    return seen_any(c, r, left, splits, false, rng, segments);
 }
 /* END SNIPPET bdpt_seen */
 
-vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t *segments)
+/* The longest subpath of a render. */
+static int max_segments(const rt_bdpt_ctx *c)
 {
-    int depth = c->ps->max_depth < RT_BDPT_MAX_DEPTH ? c->ps->max_depth : RT_BDPT_MAX_DEPTH;
-    return seen(c, r, depth, RT_BDPT_SPLITS, rng, segments);
+    return c->ps->max_depth < RT_BDPT_MAX_DEPTH ? c->ps->max_depth : RT_BDPT_MAX_DEPTH;
 }
 
-/* The streams of the term: one per pixel for the edge test, one per
+vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t *segments)
+{
+    return seen(c, r, max_segments(c), RT_BDPT_SPLITS, rng, segments);
+}
+
+/* The paths E S+ D S+ L through the Lambertian vertex D = cam[jd]: the
+ * mean over RT_BDPT_THROUGH_RAYS cosine-sampled directions at D of what
+ * comes back through glass and mirrors (the albedo stands for BRDF x cos
+ * / density), times the subpath's weight up to D. */
+/* BEGIN SNIPPET bdpt_through */
+static vec3 through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int jd, mc_rng *aux,
+                             uint64_t *segments)
+{
+    vec3 sum = vec3_make(0.0, 0.0, 0.0);
+    onb frame = onb_from_w(d->ns);
+    for (int i = 0; i < RT_BDPT_THROUGH_RAYS; i++) {
+        double u1 = mc_rng_uniform(aux), u2 = mc_rng_uniform(aux);
+        rt_ray r = rt_ray_make(d->p, pdf_cosine_direction(&frame, u1, u2));
+        sum = vec3_add(sum, seen_any(c, r, max_segments(c) - jd, RT_BDPT_SPLITS, true, aux, segments));
+    }
+    return vec3_scale(vec3_mul(vec3_mul(d->beta, d->m->albedo), sum), 1.0 / RT_BDPT_THROUGH_RAYS);
+}
+/* END SNIPPET bdpt_through */
+
+/* The streams of the terms: one per pixel for the edge test, one per
  * pixel sample (keys apart from the pixels' own streams, which are
  * mc_rng_derive(seed, pixel)). */
 #define SEEN_EDGE_KEY 0x5ee9ed9e5ee9ed9eull
 #define SEEN_SAMPLE_KEY 0x5ee95a3b1e5ee95aull
+
+mc_rng rt_bdpt_aux_stream(uint64_t seed, uint64_t sample)
+{
+    return mc_rng_derive(seed ^ SEEN_SAMPLE_KEY, sample);
+}
 
 bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64_t *segments)
 {
@@ -561,12 +636,11 @@ bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64
 }
 
 /* BEGIN SNIPPET bdpt_seen_sample */
-vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, uint64_t seed,
-                         uint64_t sample, uint64_t *segments)
+vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, mc_rng *aux,
+                         uint64_t *segments)
 {
-    mc_rng rng = mc_rng_derive(seed ^ SEEN_SAMPLE_KEY, sample);
     if (!edge)
-        return rt_bdpt_seen_emission(c, r, &rng, segments);
+        return rt_bdpt_seen_emission(c, r, aux, segments);
     /* One jittered ray in each cell of a g x g grid: the mean over the
      * cells of stratified points, unbiased for the pixel's mean. */
     enum { g = 8 };
@@ -574,18 +648,18 @@ vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r
     vec3 sum = vec3_make(0.0, 0.0, 0.0);
     for (int j = 0; j < g; j++)
         for (int i = 0; i < g; i++) {
-            double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng);
+            double u1 = mc_rng_uniform(aux), u2 = mc_rng_uniform(aux);
             rt_ray sub = rt_camera_ray(c->camera, (double)x + rt_jitter_in_cell((uint64_t)i, g, u1),
                                        (double)y + rt_jitter_in_cell((uint64_t)j, g, u2));
-            sum = vec3_add(sum, rt_bdpt_seen_emission(c, sub, &rng, segments));
+            sum = vec3_add(sum, rt_bdpt_seen_emission(c, sub, aux, segments));
         }
     return vec3_scale(sum, 1.0 / (g * g));
 }
 /* END SNIPPET bdpt_seen_sample */
 
 /* BEGIN SNIPPET bdpt_strategies */
-vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, double *splat,
-                    uint64_t *segments)
+vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, mc_rng *aux,
+                    double *splat, uint64_t *segments)
 {
     const rt_path_settings *ps = c->ps;
     int depth = ps->max_depth < RT_BDPT_MAX_DEPTH ? ps->max_depth : RT_BDPT_MAX_DEPTH;
@@ -602,8 +676,11 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
                         : walk(c, camera_ray, cam[0].beta, cam, 1, depth + 1, 0, sampler, segments);
     int nl = light_walk(c, sampler, light, depth, segments);
     subpath_pdfs sp;
+    int jd = 0;
     if (all)
         cache_pdfs(c, light, nl, cam, nc, &sp);
+    if (all && !ps->seen_twice && (jd = through_vertex(cam, nc)) > 0)
+        L = through_estimate(c, &cam[jd], jd, aux, segments);
     for (int t = 1; t <= nc; t++)
         for (int s = 0; s <= nl; s++) {
             if (s + t < 2 || s + t - 1 > depth || (t == 1 && s == 0))
@@ -617,8 +694,8 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
                 splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, splat, segments);
                 continue;
             }
-            if (all && s == 0 && !ps->seen_twice && seen_chain(cam, t))
-                continue; /* rt_bdpt_seen_sample's */
+            if (all && s == 0 && !ps->seen_twice && estimated_apart(cam, t, jd))
+                continue; /* rt_bdpt_seen_sample's or through_estimate's */
             vec3 v = join(c, light, s, cam, t, segments);
             if (is_black(v))
                 continue;

@@ -121,8 +121,8 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
  * With every strategy weighted, the paths E S* L (see below) are left
  * out: rt_bdpt_seen_sample estimates them. Draws from sampler; adds the
  * rays traced to *segments. */
-vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, double *splat,
-                    uint64_t *segments);
+vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, mc_rng *aux,
+                    double *splat, uint64_t *segments);
 
 /* --- what the camera sees through glass and mirrors ------------------- *
  *
@@ -150,6 +150,18 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
 #define RT_BDPT_SPLITS 4
 #define RT_BDPT_EDGE_SUBSAMPLES 64 /* an 8 x 8 grid */
 
+/* The caustic seen through the sphere, E S+ D S+ L (camera, glass, glass,
+ * the floor under the sphere, glass, glass, lamp), is the other family
+ * that only s = 0 can make: no two neighbouring vertices can be joined.
+ * Its only chance is the floor's bounce finding the lamp through the
+ * sphere, a few percent of the bounces there, each then worth a lot. The
+ * weighted render leaves these paths out of the strategies too and, at
+ * the first Lambertian vertex D of a camera subpath that reached it
+ * through glass or mirrors alone, sends RT_BDPT_THROUGH_RAYS
+ * cosine-distributed rays (splitting) whose glass and mirror chains are
+ * followed as above. */
+#define RT_BDPT_THROUGH_RAYS 16
+
 /* The radiance that the camera ray r finds on an emitter's emitting side
  * directly or through glass and perfect mirrors (metal of fuzz 0) alone,
  * within the render's max_depth segments (at most RT_BDPT_MAX_DEPTH),
@@ -168,8 +180,13 @@ bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64
  * RT_BDPT_EDGE_SUBSAMPLES jittered rays of the pixel; the draws come from
  * a stream keyed by seed and `sample` (a number no other sample of the
  * render uses). */
-vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, uint64_t seed,
-                         uint64_t sample, uint64_t *segments);
+vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, mc_rng *aux,
+                         uint64_t *segments);
+
+/* The stream of the terms estimated apart for one pixel sample of a
+ * render with `seed`: `sample` is a number no other sample of the render
+ * uses (pixel x spp + k). */
+mc_rng rt_bdpt_aux_stream(uint64_t seed, uint64_t sample);
 
 /* Parses "bdpt" (every strategy, weighted), "bdpt:S,T" (one strategy,
  * unweighted: S >= 0, T >= 1, S + T >= 2) or "lighttrace" into ps, or any

@@ -31,10 +31,10 @@ static void splat_row(const rt_render_job *job, const rt_bdpt_ctx *ctx, rt_image
             edges[idx] = rt_bdpt_seen_edge(ctx, x, y, job->seed, &lt->segments);
         for (uint64_t k = k0; k < k1; k++) {
             rt_ray r = rt_sample_ray(&job->camera, jt, x, y, k, &c, &sampler);
-            vec3 L = rt_bdpt_sample(ctx, r, &sampler, splat, &lt->segments);
+            mc_rng aux = rt_bdpt_aux_stream(job->seed, (uint64_t)idx * job->spp + k);
+            vec3 L = rt_bdpt_sample(ctx, r, &sampler, &aux, splat, &lt->segments);
             if (weighted)
-                L = vec3_add(L, rt_bdpt_seen_sample(ctx, x, y, edges[idx], r, job->seed,
-                                                    (uint64_t)idx * job->spp + k, &lt->segments));
+                L = vec3_add(L, rt_bdpt_seen_sample(ctx, x, y, edges[idx], r, &aux, &lt->segments));
             if (!rt_pixel_add(&img->px[idx], L))
                 lt->dropped++;
         }
