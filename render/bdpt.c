@@ -512,12 +512,13 @@ static int through_vertex(const rt_bdpt_vertex *cam, int nc)
 /* Whether the path of s = 0 that ends at camera vertex t - 1 (an emitter)
  * is one the weighted render estimates apart: E S* L (the vertices
  * between the camera and the emitter are all glass or mirrors), or
- * E S+ D S+ L with D = cam[jd] (through_vertex; jd = 0 for none). */
-static bool estimated_apart(const rt_bdpt_vertex *cam, int t, int jd)
+ * E S+ D S+ L with D = cam[jd] (through_vertex; jd = 0 for none). The
+ * negative-control hooks of ps keep them in. */
+static bool estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t, int jd)
 {
     if (all_chain(cam, 1, t - 1))
-        return true;
-    return jd > 0 && t - 1 >= jd + 2 && all_chain(cam, jd + 1, t - 1);
+        return !ps->seen_twice;
+    return jd > 0 && t - 1 >= jd + 2 && all_chain(cam, jd + 1, t - 1) && !ps->through_twice;
 }
 
 /* BEGIN SNIPPET bdpt_seen */
@@ -679,7 +680,7 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
     int jd = 0;
     if (all)
         cache_pdfs(c, light, nl, cam, nc, &sp);
-    if (all && !ps->seen_twice && (jd = through_vertex(cam, nc)) > 0)
+    if (all && (jd = through_vertex(cam, nc)) > 0)
         L = through_estimate(c, &cam[jd], jd, aux, segments);
     for (int t = 1; t <= nc; t++)
         for (int s = 0; s <= nl; s++) {
@@ -694,7 +695,7 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
                 splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, splat, segments);
                 continue;
             }
-            if (all && s == 0 && !ps->seen_twice && estimated_apart(cam, t, jd))
+            if (all && s == 0 && estimated_apart(ps, cam, t, jd))
                 continue; /* rt_bdpt_seen_sample's or through_estimate's */
             vec3 v = join(c, light, s, cam, t, segments);
             if (is_black(v))

@@ -17,7 +17,7 @@ const char *const rt_strategy_names[] = {"uniform", "cosine",     "light", "mixt
 
 rt_path_settings rt_path_settings_default(rt_strategy strategy)
 {
-    rt_path_settings ps = {strategy, 50, false, 3, 1.0, false, 0, 0, false, 0, false};
+    rt_path_settings ps = {strategy, 50, false, 3, 1.0, false, 0, 0, false, 0, false, false};
     return ps;
 }
 

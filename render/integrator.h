@@ -78,10 +78,11 @@ typedef struct rt_path_settings {
      * renderer: splats without the 1 / cos^3 of the camera importance;
      * strategy mis_double - 1 counted twice in the MIS weights' sum; the
      * paths E S* L kept in the weighted sum although rt_bdpt_seen_sample
-     * adds them too. */
+     * adds them too; the paths E S+ D S+ L kept although the split rays
+     * at D add them too. */
     bool splat_drop_cos3;
     int mis_double;
-    bool seen_twice;
+    bool seen_twice, through_twice;
 } rt_path_settings;
 
 /* Book defaults: the given strategy, max depth 50, no roulette

@@ -170,6 +170,44 @@ static void test_dielectric_directions_stay_unit(void **state)
     assert_true(worst <= 4e-16);
 }
 
+/* Splitting follows both branches of glass (rt_glass_branches); they
+ * must be the very rays rt_material_scatter chooses between, with R its
+ * probability of reflecting. For 10^5 random hits (both faces, both
+ * Fresnel forms, every angle; stream 24): a copy of the sampler shows the
+ * uniform u that scatter will draw, and scatter must return the reflected
+ * ray, bit for bit, exactly when u < R (always when R = 1, without a
+ * draw), else the refracted one; R is in [0, 1]. */
+static void test_glass_branches_match_scatter(void **state)
+{
+    (void)state;
+    rt_sampler sampler = rt_sampler_from_rng(mc_rng_derive(24u, 0u));
+    rt_material glass[2] = {rt_dielectric(1.5, RT_FRESNEL_SCHLICK), rt_dielectric(2.4, RT_FRESNEL_EXACT)};
+    int reflected = 0, refracted = 0, total = 0;
+    for (int i = 0; i < 100000; i++) {
+        vec3 n = smp_uniform_sphere_sample(mc_rng_uniform(&sampler.rng), mc_rng_uniform(&sampler.rng));
+        vec3 d = smp_uniform_sphere_sample(mc_rng_uniform(&sampler.rng), mc_rng_uniform(&sampler.rng));
+        bool front = vec3_dot(d, n) < 0.0;
+        if (vec3_dot(d, n) == 0.0)
+            continue;
+        rt_hit h = {.t = 1.0, .p = v3(1, 2, 3), .normal = front ? n : vec3_neg(n), .front_face = front};
+        rt_ray in = {v3(0, 0, 0), d}, refl, refr;
+        double R = rt_glass_branches(&glass[i & 1], &in, &h, &refl, &refr);
+        assert_true(R >= 0.0 && R <= 1.0);
+        rt_sampler peek = sampler;
+        double u = R < 1.0 ? rt_sampler_1d(&peek) : 0.0;
+        rt_scatter sc;
+        assert_true(rt_material_scatter(&glass[i & 1], &in, &h, &sampler, &sc));
+        const rt_ray *want = R >= 1.0 || u < R ? &refl : &refr;
+        assert_memory_equal(&sc.ray, want, sizeof sc.ray);
+        reflected += want == &refl;
+        refracted += want == &refr;
+        total++;
+    }
+    printf("glass branches: %d hits, %d reflected and %d refracted as rt_glass_branches said\n", total,
+           reflected, refracted);
+    assert_true(reflected > 0 && refracted > 0);
+}
+
 /* Lambert: the scattering pdf is cos / pi above the surface and 0 below;
  * it integrates to 1 (midpoint rule in cos theta: exact for a linear
  * integrand). Lights shine from the front face only; metal with fuzz 0 is
@@ -210,6 +248,7 @@ int main(void)
         cmocka_unit_test(test_refract_snell),
         cmocka_unit_test(test_dielectric_reflects_with_fresnel_probability),
         cmocka_unit_test(test_dielectric_directions_stay_unit),
+        cmocka_unit_test(test_glass_branches_match_scatter),
         cmocka_unit_test(test_lambert_metal_light),
     };
     return cmocka_run_group_tests_name("test_render_material", tests, negctl_group_setup,

@@ -17,6 +17,8 @@ run() {
 }
 run --scene book --width 96 --spp 16
 run --scene book-metal --width 24 --spp 4
+run --scene book --width 48 --spp 8 --strategy bdpt --roulette
+run --scene lambert --width 24 --spp 4 --strategy lighttrace
 run --scene lambert --width 24 --spp 4 --strategy mis
 run --scene lambert --width 24 --spp 4 --strategy light
 run --scene furnace --width 16 --spp 4 --strategy cosine
