@@ -266,8 +266,9 @@ static int walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, in
         /* Russian roulette as in render/integrator.c, on the throughput
          * since the subpath's start: it changes how often a subpath goes
          * on, not what it estimates, and the MIS weights (functions of the
-         * path alone) still sum to 1. */
-        if (ps->russian_roulette && k + 1 >= ps->rr_start) {
+         * path alone) still sum to 1. It starts after RT_BDPT_RR_START
+         * segments, not the path tracer's rr_start. */
+        if (ps->russian_roulette && k + 1 >= RT_BDPT_RR_START) {
             double q = fmax(beta.x / start.x, fmax(beta.y / start.y, beta.z / start.z));
             q = q < 0.95 ? q : 0.95;
             if (!(q > 0.0) || rt_sampler_1d(sampler) >= q)

@@ -39,9 +39,9 @@
  * sample per pixel sample, and the camera's density is the film's,
  * 1 / (A_film cos^3 theta) with A_film the whole image (Veach 10.3.3).
  * Lambertian surfaces are the only ones that can be joined. With
- * Russian roulette (rt_path_settings) both walks stop as the book's
- * integrator's paths do; the weights, functions of the path alone, still
- * sum to 1 over the strategies.
+ * Russian roulette (rt_path_settings; RT_BDPT_RR_START below) both walks
+ * stop as the book's integrator's paths do; the weights, functions of the
+ * path alone, still sum to 1 over the strategies.
  */
 #ifndef RT_BDPT_H
 #define RT_BDPT_H
@@ -57,6 +57,14 @@
 /* The longest subpath: max_depth of a bidirectional render is at most
  * this many segments. */
 #define RT_BDPT_MAX_DEPTH 64
+
+/* With Russian roulette (rt_path_settings.russian_roulette), both
+ * subpaths play it from their first bounce on, where the path tracer
+ * waits three segments (rt_path_settings.rr_start): every vertex of a
+ * subpath costs a shadow ray for each vertex of the other, and on the
+ * book's scene starting at once gave 15-25% less error x time than
+ * starting at the third bounce. */
+#define RT_BDPT_RR_START 1
 
 typedef enum rt_bdpt_kind {
     RT_BDPT_CAMERA, /* the pinhole */

@@ -130,6 +130,7 @@ double rt_fresnel_schlick_book(double cos_i, double n1, double n2)
  * reflection (transmitted_cos_eta's test); the exactly grazing 1 refracts
  * along the surface in rt_refract (cos theta_t = sqrt(0) = 0), hence the
  * 0 there. */
+/* BEGIN SNIPPET scatter_glass */
 /* What both branches at a glass hit need: the incident direction and
  * normal, d . n, cos theta_i, eta, sin^2 theta_t, cos theta_t, and the
  * reflectance r. */
@@ -179,7 +180,6 @@ static rt_ray glass_ray(const glass_hit *g, vec3 p, bool reflect)
  * leaves only the reflected branch. */
 static bool glass_reflects_only(const glass_hit *g) { return g->r >= 1.0 || g->sin2_t > 1.0; }
 
-/* BEGIN SNIPPET scatter_glass */
 static void scatter_glass(const rt_material *m, const rt_ray *in, const rt_hit *h,
                           rt_sampler *sampler, rt_scatter *s)
 {
