@@ -217,6 +217,31 @@ static void test_mis_weights_sum_to_one(void **state)
  * paths it also estimates apart (the lamp seen directly or through glass,
  * E S* L; the caustic seen through the sphere, E S+ D S+ L), each
  * counted twice, must be caught the same way. */
+/* Fails unless every region-channel of a agrees with ref, the mixture:
+ * max |t| < thr. */
+static void expect_agree(const char *what, const regions *a, const regions *ref, double thr,
+                         uint64_t seed)
+{
+    int where = 0;
+    double t = max_t(a, ref, &where);
+    printf("%s vs mixture: max |t| %.2f (threshold %.2f)\n", what, t, thr);
+    if (t >= thr)
+        fail_msg("%s disagrees with mixture in region %d: |t| %.2f >= %.2f (seed %llu)", what, where,
+                 t, thr, (unsigned long long)seed);
+}
+
+/* Records the negative control `what`, caught when some region-channel of
+ * bad is at least thr from ref, and fails if it is not. */
+static void expect_caught(negctl *nc, const char *what, const regions *bad, const regions *ref,
+                          double thr)
+{
+    int where = 0;
+    double t = max_t(bad, ref, &where);
+    printf("negative control %s: max |t| %.2f (threshold %.2f)\n", what, t, thr);
+    if (!negctl_record(nc, what, "region t-test", t >= thr))
+        fail_msg("%s was not caught: |t| %.2f < %.2f", what, t, thr);
+}
+
 static void test_agree_with_mixture(void **state)
 {
     negctl *nc = *state;
@@ -232,68 +257,37 @@ static void test_agree_with_mixture(void **state)
                 continue; /* light tracing cannot see the glass sphere */
             regions r = batched(s, cp, rt_path_settings_default((rt_strategy)st), 64,
                                 seed + 100u * (uint64_t)i + 20u * (uint64_t)(st - RT_LIGHTTRACE + 1));
-            int where = 0;
-            double t = max_t(&r, &ref, &where);
-            printf("%s: %s vs mixture: max |t| %.2f (threshold %.2f)\n", scenes[i],
-                   rt_strategy_name((rt_strategy)st), t, thr);
-            if (t >= thr)
-                fail_msg("%s: %s disagrees with mixture in region %d: |t| %.2f >= %.2f (seed %llu)",
-                         scenes[i], rt_strategy_name((rt_strategy)st), where, t, thr,
-                         (unsigned long long)seed);
+            char what[64];
+            snprintf(what, sizeof what, "%s: %s", scenes[i], rt_strategy_name((rt_strategy)st));
+            expect_agree(what, &r, &ref, thr, seed);
         }
         if (i == 0) {
             rt_path_settings lt = rt_path_settings_default(RT_LIGHTTRACE), mis = rt_path_settings_default(RT_BDPT);
             lt.splat_drop_cos3 = true;
             mis.mis_double = 2;
             regions bad1 = batched(s, cp, lt, 64, seed + 90u), bad2 = batched(s, cp, mis, 64, seed + 95u);
-            int where = 0;
-            double t1 = max_t(&bad1, &ref, &where), t2 = max_t(&bad2, &ref, &where);
-            printf("negative controls on lambert: splat without 1/cos^3: max |t| %.2f; strategy 1 "
-                   "counted twice: max |t| %.2f\n", t1, t2);
-            if (!negctl_record(nc, "light tracing without the camera importance's 1/cos^3",
-                               "region t-test", t1 >= thr))
-                fail_msg("the splat without 1/cos^3 was not caught: |t| %.2f < %.2f", t1, thr);
-            if (!negctl_record(nc, "bdpt counting next-event estimation twice", "region t-test",
-                               t2 >= thr))
-                fail_msg("the double-counted strategy was not caught: |t| %.2f < %.2f", t2, thr);
+            expect_caught(nc, "light tracing without the camera importance's 1/cos^3", &bad1, &ref, thr);
+            expect_caught(nc, "bdpt counting next-event estimation twice", &bad2, &ref, thr);
         }
         if (i == 1) {
-            rt_path_settings seen = rt_path_settings_default(RT_BDPT), through = seen;
+            rt_path_settings rr = rt_path_settings_default(RT_BDPT), seen = rr, through = rr;
+            rr.russian_roulette = true;
             seen.seen_twice = true;
             through.through_twice = true;
-            rt_path_settings rr = rt_path_settings_default(RT_BDPT);
-            rr.russian_roulette = true;
             regions with_rr = batched(s, cp, rr, 64, seed + 160u);
-            int at = 0;
-            double trr = max_t(&with_rr, &ref, &at);
-            printf("book: bdpt with Russian roulette vs mixture: max |t| %.2f (threshold %.2f)\n", trr, thr);
-            if (trr >= thr)
-                fail_msg("book: bdpt with roulette disagrees with mixture in region %d: |t| %.2f >= %.2f "
-                         "(seed %llu)", at, trr, thr, (unsigned long long)seed);
-            regions bad1 = batched(s, cp, seen, 64, seed + 190u);
+            expect_agree("book: bdpt with Russian roulette", &with_rr, &ref, thr, seed);
             /* The floor under the sphere seen through it, close up. */
             rt_camera_params close = cp;
             close.lookat = vec3_make(190.0, 30.0, 120.0);
             close.vfov_deg = 8.0;
             regions ref2 = batched(s, close, rt_path_settings_default(RT_MIXTURE), 256, seed + 170u);
             regions good2 = batched(s, close, rt_path_settings_default(RT_BDPT), 64, seed + 180u);
-            regions bad2 = batched(s, close, through, 64, seed + 195u);
-            int where = 0;
-            double t0 = max_t(&good2, &ref2, &where);
-            printf("book, the floor through the sphere close up: bdpt vs mixture: max |t| %.2f (threshold "
-                   "%.2f)\n", t0, thr);
-            if (t0 >= thr)
-                fail_msg("book close-up: bdpt disagrees with mixture in region %d: |t| %.2f >= %.2f (seed %llu)",
-                         where, t0, thr, (unsigned long long)seed);
-            double t1 = max_t(&bad1, &ref, &where), t2 = max_t(&bad2, &ref2, &where);
-            printf("negative controls on book: the view through glass counted twice: max |t| %.2f; the "
-                   "caustic through the sphere counted twice: max |t| %.2f\n", t1, t2);
-            if (!negctl_record(nc, "bdpt counting the camera's view of the lamp through glass twice",
-                               "region t-test", t1 >= thr))
-                fail_msg("the doubled view through glass was not caught: |t| %.2f < %.2f", t1, thr);
-            if (!negctl_record(nc, "bdpt counting the caustic seen through the sphere twice",
-                               "region t-test", t2 >= thr))
-                fail_msg("the doubled caustic through the sphere was not caught: |t| %.2f < %.2f", t2, thr);
+            expect_agree("book, the floor through the sphere close up: bdpt", &good2, &ref2, thr, seed);
+            regions bad1 = batched(s, cp, seen, 64, seed + 190u), bad2 = batched(s, close, through, 64, seed + 195u);
+            expect_caught(nc, "bdpt counting the camera's view of the lamp through glass twice", &bad1,
+                          &ref, thr);
+            expect_caught(nc, "bdpt counting the caustic seen through the sphere twice", &bad2, &ref2,
+                          thr);
         }
         rt_scene_destroy(s);
     }
