@@ -422,17 +422,36 @@ static bool visible(const rt_scene *s, vec3 a, vec3 b, uint64_t *segments)
     return !rt_scene_hit(s, rt_ray_make(a, vec3_scale(d, 1.0 / dist)), dist - rt_scene_t_min(s), &h);
 }
 
-/* The unweighted contribution of strategy (s, t) with t >= 2 (s = 0: the
- * camera subpath's own hit on an emitter). */
+/* Russian roulette on a join whose value, if nothing is in the way,
+ * would be v, worth `scale` times v to a pixel sample: when that is below
+ * RT_BDPT_JOIN_FLOOR in every channel, the shadow ray is traced with
+ * probability (its worth / the floor) and the value divided by it, else
+ * always. Returns the factor, 0 for a join left out; its mean is 1, so
+ * the estimate is unchanged in expectation. */
+static double join_roulette(vec3 v, double scale, mc_rng *aux)
+{
+    double worth = scale * fmax(v.x, fmax(v.y, v.z));
+    if (!aux || !(worth < RT_BDPT_JOIN_FLOOR))
+        return 1.0;
+    double q = worth / RT_BDPT_JOIN_FLOOR;
+    return mc_rng_uniform(aux) < q ? 1.0 / q : 0.0;
+}
+
+/* The contribution of strategy (s, t) with t >= 2 (s = 0: the camera
+ * subpath's own hit on an emitter), weighted by the cached densities sp
+ * (NULL: unweighted), with roulette on its shadow ray when aux is given. */
 /* BEGIN SNIPPET bdpt_join */
-static vec3 join(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam,
-                 int t, uint64_t *segments)
+static vec3 join(const rt_bdpt_ctx *c, const subpath_pdfs *sp, const rt_bdpt_vertex *light, int s,
+                 const rt_bdpt_vertex *cam, int t, mc_rng *aux, uint64_t *segments)
 {
     const rt_bdpt_vertex *z = &cam[t - 1];
-    vec3 zero = vec3_make(0.0, 0.0, 0.0);
-    if (s == 0)
-        return z->kind == RT_BDPT_SURFACE && z->front_face ? vec3_mul(z->beta, z->m->emission)
-                                                          : zero;
+    vec3 zero = vec3_make(0.0, 0.0, 0.0), v;
+    if (s == 0) {
+        if (z->kind != RT_BDPT_SURFACE || !z->front_face || is_black(z->m->emission))
+            return zero;
+        v = vec3_mul(z->beta, z->m->emission);
+        return sp ? vec3_scale(v, join_weight(c, sp, light, s, cam, t)) : v;
+    }
     const rt_bdpt_vertex *y = &light[s - 1];
     vec3 fy = end_factor(y, z->p), fz = end_factor(z, y->p);
     if (is_black(fy) || is_black(fz))
@@ -440,9 +459,15 @@ static vec3 join(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s, const
     vec3 d = vec3_sub(z->p, y->p);
     double dist_sq = vec3_length_sq(d);
     double g = fabs(vec3_dot(y->ng, d)) * fabs(vec3_dot(z->ng, d)) / (dist_sq * dist_sq);
-    if (!(g > 0.0) || !visible(c->scene, y->p, z->p, segments))
+    if (!(g > 0.0))
         return zero;
-    return vec3_scale(vec3_mul(vec3_mul(y->beta, fy), vec3_mul(z->beta, fz)), g);
+    v = vec3_scale(vec3_mul(vec3_mul(y->beta, fy), vec3_mul(z->beta, fz)), g);
+    if (sp)
+        v = vec3_scale(v, join_weight(c, sp, light, s, cam, t));
+    double f = join_roulette(v, 1.0, aux);
+    if (f == 0.0 || !visible(c->scene, y->p, z->p, segments))
+        return zero;
+    return vec3_scale(v, f);
 }
 /* END SNIPPET bdpt_join */
 
@@ -450,8 +475,8 @@ static vec3 join(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s, const
  * with the camera importance (and weight w_fn's weight). */
 /* BEGIN SNIPPET bdpt_splat */
 static void splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s,
-                            const rt_bdpt_vertex *cam0, const subpath_pdfs *sp, double *splat,
-                            uint64_t *segments)
+                            const rt_bdpt_vertex *cam0, const subpath_pdfs *sp, mc_rng *aux,
+                            double *splat, uint64_t *segments)
 {
     const rt_bdpt_vertex *y = &light[s - 1];
     size_t px;
@@ -464,11 +489,18 @@ static void splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, i
     vec3 d = vec3_sub(cam0->p, y->p);
     double dist_sq = vec3_length_sq(d);
     double g = fabs(vec3_dot(y->ng, d)) / (sqrt(dist_sq) * dist_sq);
-    if (!(g > 0.0) || !visible(c->scene, y->p, cam0->p, segments))
+    if (!(g > 0.0))
         return;
     vec3 v = vec3_scale(vec3_mul(y->beta, fy), g * we);
     if (sp)
         v = vec3_scale(v, join_weight(c, sp, light, s, cam0, 1));
+    /* A splat is divided by the number of light subpaths, one per pixel
+     * sample: to a pixel sample it is worth v over the pixel count. */
+    double npix = (double)c->camera->width * (double)c->camera->height;
+    double f = join_roulette(v, 1.0 / npix, aux);
+    if (f == 0.0 || !visible(c->scene, y->p, cam0->p, segments))
+        return;
+    v = vec3_scale(v, f);
     /* A non-finite splat would spoil a pixel for good: left out (the
      * factors above are finite for any path that gets here). */
     if (!isfinite(v.x) || !isfinite(v.y) || !isfinite(v.z))
@@ -693,17 +725,13 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
             if (!all && !lighttrace && (s != ps->bdpt_s || t != ps->bdpt_t))
                 continue;
             if (t == 1) {
-                splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, splat, segments);
+                splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, all ? aux : NULL, splat,
+                                segments);
                 continue;
             }
             if (all && s == 0 && estimated_apart(ps, cam, t, jd))
                 continue; /* rt_bdpt_seen_sample's or through_estimate's */
-            vec3 v = join(c, light, s, cam, t, segments);
-            if (is_black(v))
-                continue;
-            if (all)
-                v = vec3_scale(v, join_weight(c, &sp, light, s, cam, t));
-            L = vec3_add(L, v);
+            L = vec3_add(L, join(c, all ? &sp : NULL, light, s, cam, t, all ? aux : NULL, segments));
         }
     return L;
 }

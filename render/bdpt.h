@@ -66,6 +66,14 @@
  * starting at the third bounce. */
 #define RT_BDPT_RR_START 1
 
+/* The weighted render also plays roulette on its shadow rays: a join or
+ * splat worth less than this to a pixel sample (in every channel, if
+ * nothing is in the way) is traced with probability worth / floor and
+ * divided by it, so none adds more than the floor. On the book's scene
+ * 0.03 saves 15% of the rays for 4% more error; 0.1 saves 29% for 76%
+ * more. */
+#define RT_BDPT_JOIN_FLOOR 0.03
+
 typedef enum rt_bdpt_kind {
     RT_BDPT_CAMERA, /* the pinhole */
     RT_BDPT_LIGHT,  /* a point drawn on an emitter (y_0) */
