@@ -25,10 +25,11 @@
  *     samples it. Specular vertices (glass, metal) cannot be joined: a
  *     strategy that would join at one is left out of the sum, and the
  *     densities through it count as 1 in both directions (the deltas
- *     cancel). One exception to the heuristic: a path whose light end is
- *     reached through a specular vertex (the caustic) goes wholly to the
- *     joins when one can make it, not partly to s = 0 (see
- *     weight_from in bdpt.c).
+ *     cancel). Two exceptions to the heuristic (see weight_from in
+ *     bdpt.c): a path whose light end is reached through a specular
+ *     vertex (the caustic) goes wholly to the joins when one can make it,
+ *     not partly to s = 0; a lamp seen directly (two vertices) goes
+ *     wholly to s = 0, not partly to the splat (1, 1).
  * The camera's importance for pixel j is W_j = 1 / (A_pix cos^3 theta)
  * per unit solid angle: a pixel's value is the mean of the radiance over
  * its area A_pix of the image plane at distance 1, and a patch dA of that
@@ -135,8 +136,11 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
  * t >= 2 for this pixel; adds those with t = 1, times the camera
  * importance, to splat[3 j .. 3 j + 3) of the pixel j they are seen in.
  * With every strategy weighted, the paths E S* L (see below) are left
- * out: rt_bdpt_seen_sample estimates them. Draws from sampler; adds the
- * rays traced to *segments. */
+ * out, rt_bdpt_seen_sample estimates them; the paths E S+ D S+ L are
+ * left out too and estimated here by split rays (RT_BDPT_THROUGH_RAYS);
+ * and shadow rays play roulette (RT_BDPT_JOIN_FLOOR). Those draws come
+ * from aux (rt_bdpt_aux_stream), every other from sampler. Adds the rays
+ * traced to *segments. */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, mc_rng *aux,
                     double *splat, uint64_t *segments);
 
@@ -194,8 +198,7 @@ bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64
 /* The term for one sample of pixel (x, y) whose camera ray is r:
  * rt_bdpt_seen_emission(r), or at an edge pixel its mean over
  * RT_BDPT_EDGE_SUBSAMPLES jittered rays of the pixel; the draws come from
- * a stream keyed by seed and `sample` (a number no other sample of the
- * render uses). */
+ * aux, the sample's own stream (rt_bdpt_aux_stream). */
 vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, mc_rng *aux,
                          uint64_t *segments);
 
