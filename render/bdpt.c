@@ -611,6 +611,22 @@ static vec3 seen(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, mc_rng *r
 }
 /* END SNIPPET bdpt_seen */
 
+/* rt_bdpt_seen_emission of the camera ray r from its first hit, which the
+ * camera subpath cam[0..nc) has found already (vertex 1; none when r met
+ * nothing): the same term without tracing r again. */
+static vec3 seen_first(const rt_bdpt_ctx *c, rt_ray r, const rt_bdpt_vertex *cam, int nc, int depth,
+                       mc_rng *aux, uint64_t *segments)
+{
+    if (nc < 2)
+        return vec3_make(0.0, 0.0, 0.0);
+    const rt_bdpt_vertex *x = &cam[1];
+    rt_hit h = {.p = x->p, .normal = x->ns, .front_face = x->front_face};
+    vec3 e = rt_material_emitted(x->m, &h);
+    if (!chain_material(x->m))
+        return e;
+    return vec3_add(e, through_chain_vertex(c, r, &h, x->m, depth, RT_BDPT_SPLITS, aux, segments));
+}
+
 /* The longest subpath of a render. */
 static int max_segments(const rt_bdpt_ctx *c)
 {
@@ -670,11 +686,8 @@ bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64
 }
 
 /* BEGIN SNIPPET bdpt_seen_sample */
-vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, mc_rng *aux,
-                         uint64_t *segments)
+vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, mc_rng *aux, uint64_t *segments)
 {
-    if (!edge)
-        return rt_bdpt_seen_emission(c, r, aux, segments);
     /* One jittered ray in each cell of a g x g grid: the mean over the
      * cells of stratified points, unbiased for the pixel's mean. */
     enum { g = 8 };
@@ -693,7 +706,7 @@ vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r
 
 /* BEGIN SNIPPET bdpt_strategies */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, mc_rng *aux,
-                    double *splat, uint64_t *segments)
+                    bool seen_here, double *splat, uint64_t *segments)
 {
     const rt_path_settings *ps = c->ps;
     int depth = ps->max_depth < RT_BDPT_MAX_DEPTH ? ps->max_depth : RT_BDPT_MAX_DEPTH;
@@ -715,6 +728,8 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
         cache_pdfs(c, light, nl, cam, nc, &sp);
     if (all && (jd = through_vertex(cam, nc)) > 0)
         L = through_estimate(c, &cam[jd], jd, aux, segments);
+    if (all && seen_here)
+        L = vec3_add(L, seen_first(c, camera_ray, cam, nc, depth, aux, segments));
     for (int t = 1; t <= nc; t++)
         for (int s = 0; s <= nl; s++) {
             if (s + t < 2 || s + t - 1 > depth || (t == 1 && s == 0))

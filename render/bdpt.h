@@ -136,13 +136,15 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
  * t >= 2 for this pixel; adds those with t = 1, times the camera
  * importance, to splat[3 j .. 3 j + 3) of the pixel j they are seen in.
  * With every strategy weighted, the paths E S* L (see below) are left
- * out, rt_bdpt_seen_sample estimates them; the paths E S+ D S+ L are
+ * out and estimated apart: here from the camera subpath's first hit
+ * when seen_here (a pixel that is not an edge), else by the caller with
+ * rt_bdpt_seen_sample; the paths E S+ D S+ L are
  * left out too and estimated here by split rays (RT_BDPT_THROUGH_RAYS);
  * and shadow rays play roulette (RT_BDPT_JOIN_FLOOR). Those draws come
  * from aux (rt_bdpt_aux_stream), every other from sampler. Adds the rays
  * traced to *segments. */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, mc_rng *aux,
-                    double *splat, uint64_t *segments);
+                    bool seen_here, double *splat, uint64_t *segments);
 
 /* --- what the camera sees through glass and mirrors ------------------- *
  *
@@ -162,7 +164,8 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
  *     probability, as rt_material_scatter draws it;
  *   - a pixel at an edge (rt_bdpt_seen_edge) takes RT_BDPT_EDGE_SUBSAMPLES
  *     camera rays, one in each cell of a jittered grid, per pixel sample
- *     for this term alone; any other pixel takes the sample's own ray.
+ *     for this term alone; any other pixel takes the sample's own ray,
+ *     whose first hit the camera subpath has found already.
  * Which pixels count as edges changes how many rays the term takes, not
  * what it estimates: every pixel sample's term is an unbiased estimate of
  * the pixel's mean of it, so the partition (these paths here, all others
@@ -195,12 +198,12 @@ vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t
  * differ by more than 0.01 in some channel. */
 bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64_t *segments);
 
-/* The term for one sample of pixel (x, y) whose camera ray is r:
- * rt_bdpt_seen_emission(r), or at an edge pixel its mean over
- * RT_BDPT_EDGE_SUBSAMPLES jittered rays of the pixel; the draws come from
- * aux, the sample's own stream (rt_bdpt_aux_stream). */
-vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, bool edge, rt_ray r, mc_rng *aux,
-                         uint64_t *segments);
+/* The term for one sample of the edge pixel (x, y): the mean of
+ * rt_bdpt_seen_emission over RT_BDPT_EDGE_SUBSAMPLES jittered rays of the
+ * pixel, one in each cell of a grid; the draws come from aux, the
+ * sample's own stream (rt_bdpt_aux_stream). At any other pixel
+ * rt_bdpt_sample adds the term of the sample's own camera ray. */
+vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, mc_rng *aux, uint64_t *segments);
 
 /* The stream of the terms estimated apart for one pixel sample of a
  * render with `seed`: `sample` is a number no other sample of the render

@@ -32,9 +32,10 @@ static void splat_row(const rt_render_job *job, const rt_bdpt_ctx *ctx, rt_image
         for (uint64_t k = k0; k < k1; k++) {
             rt_ray r = rt_sample_ray(&job->camera, jt, x, y, k, &c, &sampler);
             mc_rng aux = rt_bdpt_aux_stream(job->seed, (uint64_t)idx * job->spp + k);
-            vec3 L = rt_bdpt_sample(ctx, r, &sampler, &aux, splat, &lt->segments);
-            if (weighted)
-                L = vec3_add(L, rt_bdpt_seen_sample(ctx, x, y, edges[idx], r, &aux, &lt->segments));
+            vec3 L = rt_bdpt_sample(ctx, r, &sampler, &aux, weighted && !edges[idx], splat,
+                                    &lt->segments);
+            if (weighted && edges[idx])
+                L = vec3_add(L, rt_bdpt_seen_sample(ctx, x, y, &aux, &lt->segments));
             if (!rt_pixel_add(&img->px[idx], L))
                 lt->dropped++;
         }
