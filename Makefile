@@ -20,7 +20,7 @@ DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox 
 
 # Link order, highest layer first. The sampler catalog sits above pdf/
 # and below the programs; it does not use render/.
-LAYERS := catalog render pdf samplers mc
+LAYERS := check catalog render pdf samplers mc
 # A layer's archive holds its folder's sources and those of its fast/
 # subfolder (render/fast/: the renderer's vector fast path).
 lib_srcs = $(wildcard $(1)/*.c $(1)/fast/*.c)

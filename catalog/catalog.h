@@ -129,6 +129,9 @@ typedef struct cat_row {
     bool rim_zero, pole_infinite;
     cat_chart_kind chart;
     double lo, hi; /* LINE: the interval; DIRECTION: cos theta from lo about +z by default */
+    /* A negative control (catalog/negatives.c): what is wrong with it;
+     * NULL for every real sampler. */
+    const char *wrong;
     cat_case cases[CAT_MAX_CASES + 1];
 } cat_row;
 
@@ -154,7 +157,12 @@ struct cat_state {
 size_t cat_count(void);
 const cat_row *cat_at(size_t i);
 
-/* The row called `name`, or NULL; the case called `name` of any row, or
+/* The negative controls: rows wrong on purpose (their `wrong` says how),
+ * which every check must reject. Not among cat_count's rows. */
+size_t cat_negative_count(void);
+const cat_row *cat_negative_at(size_t i);
+
+/* The row called `name` (a negative control's too), or NULL; the case called `name` of any row, or
  * NULL (its row in *row). */
 const cat_row *cat_find(const char *name);
 const cat_case *cat_find_case(const char *name, const cat_row **row);
@@ -209,6 +217,13 @@ void cat_use_lobe_chart(cat_state *s, double width);
  * chart point (the row's density times the chart's Jacobian). */
 void cat_chart_point(const cat_state *s, const double x[3], double out[2]);
 double cat_chart_density(const cat_state *s, const double c[2]);
+
+/* The same with any density f of the row's points in place of the row's
+ * own (read only, ctx passed through): the chart's Jacobian times f at the
+ * point of chart point c, 0 where the chart point has no point. f is not
+ * called there. */
+typedef double (*cat_density_fn)(const double x[3], void *ctx);
+double cat_chart_density_of(const cat_state *s, const double c[2], cat_density_fn f, void *ctx);
 
 /* The goodness-of-fit experiment of the state: its chart's rectangle,
  * `cells` cells ({0, 0}: 50 x 100 for a 2D chart, 120 x 90 for a light's

@@ -17,6 +17,9 @@ const cat_row *cat_find(const char *name)
     for (size_t i = 0; i < cat_count(); i++)
         if (strcmp(cat_at(i)->name, name) == 0)
             return cat_at(i);
+    for (size_t i = 0; i < cat_negative_count(); i++)
+        if (strcmp(cat_negative_at(i)->name, name) == 0)
+            return cat_negative_at(i);
     return NULL;
 }
 
@@ -291,42 +294,42 @@ void cat_chart_point(const cat_state *s, const double x[3], double out[2])
     }
 }
 
-double cat_chart_density(const cat_state *s, const double c[2])
+double cat_chart_density_of(const cat_state *s, const double c[2], cat_density_fn f, void *ctx)
 {
     switch (s->chart) {
     case CAT_CHART_LINE:
     case CAT_CHART_XY: {
         double y[3] = {c[0], c[1], 0.0};
-        return cat_pdf(s, y);
+        return f(y, ctx);
     }
     case CAT_CHART_INDEX: {
         double y[3] = {floor(c[0]), 0.0, 0.0};
-        return cat_pdf(s, y);
+        return f(y, ctx);
     }
     case CAT_CHART_DISC: {
         /* d area = r dr d phi = d(r^2) d phi / 2. */
         double r = sqrt(c[0]), y[3] = {r * cos(c[1]), r * sin(c[1]), 0.0};
-        return 0.5 * cat_pdf(s, y);
+        return 0.5 * f(y, ctx);
     }
     case CAT_CHART_PARALLELOGRAM: {
         /* d area = |u x v| da db. */
         const cat_values *p = &s->p;
         vec3 x = vec3_madd(vec3_madd(p->corner, p->u, c[0]), p->v, c[1]);
         double y[3] = {x.x, x.y, x.z};
-        return cat_pdf(s, y) * vec3_length(vec3_cross(p->u, p->v));
+        return f(y, ctx) * vec3_length(vec3_cross(p->u, p->v));
     }
     case CAT_CHART_SURFACE: {
         /* d area = r^2 d omega = r^2 d(cos theta) d phi. */
         const cat_values *p = &s->p;
         vec3 x = vec3_madd(p->center, smp_spherical_direction(c[0], c[1]), p->radius);
         double y[3] = {x.x, x.y, x.z};
-        return cat_pdf(s, y) * p->radius * p->radius;
+        return f(y, ctx) * p->radius * p->radius;
     }
     case CAT_CHART_DIRECTION: {
         double jac;
         vec3 d = pdf_chart_direction(&s->dir_chart, c, &jac);
         double y[3] = {d.x, d.y, d.z};
-        return jac > 0.0 ? cat_pdf(s, y) * jac : 0.0;
+        return jac > 0.0 ? f(y, ctx) * jac : 0.0;
     }
     case CAT_CHART_LOBE: {
         /* theta = s x / (1 - x), d theta / dx = s / (1 - x)^2, and the
@@ -337,10 +340,20 @@ double cat_chart_density(const cat_state *s, const double c[2])
             return 0.0;
         vec3 d = smp_spherical_direction(cos(theta), c[1]);
         double y[3] = {d.x, d.y, d.z};
-        return cat_pdf(s, y) * sin(theta) * w / ((1.0 - x) * (1.0 - x));
+        return f(y, ctx) * sin(theta) * w / ((1.0 - x) * (1.0 - x));
     }
     }
     return 0.0;
+}
+
+static double row_density(const double x[3], void *ctx)
+{
+    return cat_pdf(ctx, x);
+}
+
+double cat_chart_density(const cat_state *s, const double c[2])
+{
+    return cat_chart_density_of(s, c, row_density, (void *)s);
 }
 
 static void gof_sample(mc_rng *rng, void *ctx, double out[2])

@@ -24,19 +24,25 @@ static int cell_of(double x, double lo, double hi, int n)
     return i < 0 ? 0 : (i >= n ? n - 1 : i);
 }
 
-double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double *obs)
+int mc_gof_cell_index(const mc_gof_spec *spec, const double x[2])
 {
     int nx = spec->cells[0], ny = spec->dims == 2 ? spec->cells[1] : 1;
+    int i = cell_of(x[0], spec->lo[0], spec->hi[0], nx);
+    int j = spec->dims == 2 ? cell_of(x[1], spec->lo[1], spec->hi[1], ny) : 0;
+    return i < 0 || j < 0 ? -1 : i * ny + j;
+}
+
+double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double *obs)
+{
     double outside = 0.0;
     for (uint64_t k = 0; k < n; k++) {
         double x[2] = {0.0, 0.0};
         spec->sample(rng, spec->ctx, x);
-        int i = cell_of(x[0], spec->lo[0], spec->hi[0], nx);
-        int j = spec->dims == 2 ? cell_of(x[1], spec->lo[1], spec->hi[1], ny) : 0;
-        if (i < 0 || j < 0)
+        int c = mc_gof_cell_index(spec, x);
+        if (c < 0)
             outside += 1.0;
         else
-            obs[i * ny + j] += 1.0;
+            obs[c] += 1.0;
     }
     return outside;
 }
@@ -113,20 +119,24 @@ int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob)
 }
 
 /* BEGIN SNIPPET gof_expected */
-int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct)
+void mc_gof_expected_of_probs(const double *prob, size_t cells, uint64_t n, double *expct)
 {
-    int status = mc_gof_cell_probs(spec, expct);
-    int cells = mc_gof_cell_count(spec);
     /* The quadrature's own zero (its absolute tolerance is 1e-12) is an
      * exactly-zero cell for the test; NaN stays NaN. A cell clearly below
      * that zero is a pdf that goes negative, not round-off: it becomes NaN
      * so that the test rejects instead of pooling it away. */
-    for (int c = 0; c < cells; c++) {
-        double p = expct[c];
+    for (size_t c = 0; c < cells; c++) {
+        double p = prob[c];
         expct[c] = p < -MC_QUAD_EPSABS         ? (double)NAN
                    : p < MC_GOF_ZERO_CELL_PROB ? 0.0
                                                : p * (double)n;
     }
+}
+
+int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct)
+{
+    int status = mc_gof_cell_probs(spec, expct);
+    mc_gof_expected_of_probs(expct, (size_t)mc_gof_cell_count(spec), n, expct);
     return status;
 }
 /* END SNIPPET gof_expected */

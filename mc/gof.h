@@ -25,6 +25,7 @@
 #define MC_GOF_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "mc/chi2.h"
@@ -69,6 +70,11 @@ int mc_gof_cell_count(const mc_gof_spec *spec);
  * accumulation, so the last edge is exactly hi. */
 void mc_gof_cell_box(const mc_gof_spec *spec, int c, double box[4]);
 
+/* The cell of the point x of the parameterization (0 <= c <
+ * mc_gof_cell_count), or -1 when x lies outside the rectangle by more than
+ * MC_GOF_EDGE_TOL (NaN coordinates are outside). */
+int mc_gof_cell_index(const mc_gof_spec *spec, const double x[2]);
+
 /* Adds n samples drawn from rng to obs[0 .. mc_gof_cell_count) (the caller
  * zeroes it first) and returns how many fell outside the rectangle (NaN
  * coordinates count as outside). */
@@ -87,6 +93,12 @@ int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob);
  * Returns 0, or -1 when a workspace could not be allocated (the contents
  * of expct are then unspecified). */
 int mc_gof_expected(const mc_gof_spec *spec, uint64_t n, double *expct);
+
+/* The expected counts of mc_gof_expected from cell probabilities
+ * prob[0 .. cells) (as mc_gof_cell_probs writes them) and n samples: n p,
+ * 0 below MC_GOF_ZERO_CELL_PROB, NaN below -MC_QUAD_EPSABS. expct may be
+ * prob. */
+void mc_gof_expected_of_probs(const double *prob, size_t cells, uint64_t n, double *expct);
 
 /* The density's integral over the whole rectangle in one adaptive rule
  * (q from mc_quad_create); 1 to the quadrature's accuracy for a normalized

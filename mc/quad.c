@@ -109,3 +109,15 @@ int mc_quad_2d(mc_quad *q, mc_fn2 fn, double x0, double x1, double y0, double y1
     return status ? status : s.status;
 }
 /* END SNIPPET quad_nested_2d */
+
+int mc_quad_gauss_legendre(int n, double a, double b, double *x, double *w)
+{
+    mc_gsl_quiet();
+    gsl_integration_glfixed_table *t = gsl_integration_glfixed_table_alloc((size_t)n);
+    if (!t)
+        return -1;
+    for (int i = 0; i < n; i++)
+        gsl_integration_glfixed_point(a, b, (size_t)i, &x[i], &w[i], t);
+    gsl_integration_glfixed_table_free(t);
+    return 0;
+}

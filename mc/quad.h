@@ -58,4 +58,11 @@ int mc_quad_1d(mc_quad *q, mc_fn1 fn, double a, double b, double *result, double
 int mc_quad_2d(mc_quad *q, mc_fn2 fn, double x0, double x1, double y0, double y1, double *result,
                double *abserr);
 
+/* The n-point Gauss-Legendre rule on [a, b] (n >= 1): nodes x[0 .. n) and
+ * weights w[0 .. n), exact for polynomials of degree 2n - 1. For densities
+ * that can only be evaluated in batches (behind a pipe), where an adaptive
+ * rule's one-at-a-time requests would cost a round trip each. Returns 0, or
+ * -1 when out of memory. */
+int mc_quad_gauss_legendre(int n, double a, double b, double *x, double *w);
+
 #endif /* MC_QUAD_H */
