@@ -55,6 +55,10 @@ help:
 	@echo "V=1            show the full compiler command lines"
 	@echo "MPI=1          build with Open MPI into build/mpi/ (README, \"Beyond one machine\")"
 	@echo "make test-mpi  the programs under mpirun give the bytes of one process"
+	@echo "make install   libmcbox, mcbox/check.h, mcbox.pc, the mcbox programs and man pages"
+	@echo "               (PREFIX=/usr/local; BINDIR, LIBDIR, INCLUDEDIR, MANDIR, PKGCONFIGDIR; DESTDIR)"
+	@echo "make uninstall remove what make install put there (same PREFIX and DESTDIR)"
+	@echo "make outside-check  install into build/stage, then build and test outside/ against it"
 
 deps:
 	@sh tools/deps.sh $(DEB_PACKAGES)
@@ -107,3 +111,5 @@ clean:
 include mk/reference.mk
 include mk/rules.mk
 include mk/pgo.mk
+include mk/install.mk
+include mk/fuzz.mk

@@ -7,6 +7,8 @@
  *   warp chi2 NAME [--param k=v]... [--n N] [--seed S] [--alpha A]
  *                                   prints a header "chi2 dof p verdict" and
  *                                   one line of the four values
+ *   warp serve NAME [--param k=v]...   answers mcbox-check's --exec protocol
+ *                                   (docs/check-protocol.md) on stdin/stdout
  *
  * Points are written and read as in `sample`: directions `x y z`, planar
  * points `x y`, reals `x`, discrete outcomes the index; numbers in %.17g.
@@ -21,13 +23,18 @@
  *                 build/bin/warp sample phong --param n=10 --n 3 |
  *                     build/bin/warp pdf phong --param n=10
  *                 build/bin/warp chi2 mixture --param w=0.2
+ *                 build/bin/mcbox-check --exec 'build/bin/warp serve cosine' \
+ *                     --domain hemisphere
  */
+#define _POSIX_C_SOURCE 200809L /* getline, ssize_t */
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/exec_proto.h"
 #include "catalog/catalog.h"
 #include "mc/gof.h"
 
@@ -39,6 +46,7 @@ static const char USAGE[] =
     "       warp sample NAME [--param k=v]... [--n N] [--seed S]\n"
     "       warp pdf NAME [--param k=v]...      (points on stdin)\n"
     "       warp chi2 NAME [--param k=v]... [--n N] [--seed S] [--alpha A]\n"
+    "       warp serve NAME [--param k=v]...    (mcbox-check --exec: commands on stdin)\n"
     "--samples is a synonym of --n. chi2 exits 0 on pass, 1 on fail; bad input exits 2.\n"
     "A command refuses the options it does not take (list takes none, pdf only --param).\n"
     "pdf of discrete and alias reads outcome indices: whole numbers from 0 to k-1.\n"
@@ -121,7 +129,8 @@ static args parse(int argc, char **argv)
         app_fail(PROG, "no command (list, sample, pdf or chi2; see --help)");
     /* Each command refuses what it would ignore: `warp list --n 3` or
      * `warp pdf x --seed 2` is a mistake the user should hear about. */
-    bool list = strcmp(a.command, "list") == 0, densities_only = strcmp(a.command, "pdf") == 0,
+    bool list = strcmp(a.command, "list") == 0,
+         densities_only = strcmp(a.command, "pdf") == 0 || strcmp(a.command, "serve") == 0,
          sample = strcmp(a.command, "sample") == 0;
     const char *extra = list && a.n_params ? "--param"
                         : (list || densities_only) && a.have_n ? "--n"
@@ -204,6 +213,128 @@ static void densities(const cat_state *s)
     free(out);
 }
 
+/* --- serve: the --exec protocol (examples/common/exec_proto.h) ------------ */
+
+/* A command the row cannot answer, or a malformed one: "error ..." for
+ * mcbox-check, which reports it, and the same on stderr for a person
+ * typing at the program; exit 2. */
+_Noreturn static void serve_fail(long lineno, const char *fmt, const char *detail)
+{
+    char msg[400];
+    snprintf(msg, sizeof msg, fmt, detail);
+    printf("error line %ld: %s\n", lineno, msg);
+    fflush(stdout);
+    app_fail(PROG, "serve: stdin line %ld: %s", lineno, msg);
+}
+
+/* The next line of stdin without its line end, or NULL at EOF. */
+static const char *next_line(char **buf, size_t *cap, size_t *len, long *lineno)
+{
+    ssize_t k = getline(buf, cap, stdin);
+    if (k < 0)
+        return NULL;
+    ++*lineno;
+    *len = (size_t)k;
+    while (*len > 0 && ((*buf)[*len - 1] == '\n' || (*buf)[*len - 1] == '\r'))
+        --*len;
+    return *buf;
+}
+
+/* A point of the row, as `sample` prints it. */
+static void print_point(const cat_state *s, const double *x, int n)
+{
+    char line[128];
+    if (s->row->point == CAT_INDEX)
+        printf("%.0f\n", x[0]);
+    else if (app_proto_format_numbers(line, sizeof line, x, n))
+        fputs(line, stdout);
+}
+
+/* One batch after its command line: K item lines in, K answer lines out. */
+static void serve_batch(const cat_state *s, const app_proto_request *q, int uniforms, mc_rng *rng,
+                        char **buf, size_t *cap, long *lineno)
+{
+    const cat_row *row = s->row;
+    int dims = cat_point_dims(row);
+    int in = q->cmd == APP_PROTO_SAMPLE ? uniforms : q->cmd == APP_PROTO_DRAW ? 0 : dims;
+    char err[200];
+    for (size_t i = 0; i < q->k; i++) {
+        double v[MCBOX_MAX_UNIFORMS] = {0.0}, x[3] = {0.0, 0.0, 0.0}, u[2] = {0.0, 0.0};
+        size_t len;
+        if (in > 0) {
+            if (!next_line(buf, cap, &len, lineno))
+                serve_fail(*lineno + 1, "%s", "end of input inside a batch");
+            if (!app_proto_parse_numbers(*buf, len, in, v, err, sizeof err))
+                serve_fail(*lineno, "%s", err);
+        }
+        switch (q->cmd) {
+        case APP_PROTO_SAMPLE:
+            row->sample_u(s, v, x);
+            print_point(s, x, dims);
+            break;
+        case APP_PROTO_DRAW:
+            cat_sample(s, rng, x);
+            print_point(s, x, dims);
+            break;
+        case APP_PROTO_PDF:
+            /* Directions as `warp pdf` reads them: normalized, and the zero
+             * vector, which is none, of density 0. */
+            if (row->point == CAT_DIRECTION) {
+                double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                v[0] /= l, v[1] /= l, v[2] /= l;
+            }
+            printf("%.17g\n", isfinite(v[0]) ? cat_pdf(s, v) : 0.0);
+            break;
+        default:
+            row->invert(s, v, u);
+            print_point(s, u, uniforms);
+            break;
+        }
+    }
+    fflush(stdout);
+}
+
+/* Answers hello, sample, draw, pdf and invert until EOF on stdin. */
+static void serve(const cat_state *s)
+{
+    const cat_row *row = s->row;
+    static char outbuf[1 << 16];
+    setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
+    char *buf = NULL, err[200];
+    size_t cap = 0, len;
+    long lineno = 0;
+    bool hello = false;
+    int uniforms = row->uniforms;
+    mc_rng rng = mc_rng_derive(1u, 0u);
+    while (next_line(&buf, &cap, &len, &lineno)) {
+        app_proto_request q;
+        if (!app_proto_parse_command(buf, len, &q, err, sizeof err))
+            serve_fail(lineno, "%s", err);
+        if (q.cmd == APP_PROTO_HELLO) {
+            char want[80];
+            snprintf(want, sizeof want, "%d %d", cat_point_dims(row), row->uniforms);
+            if (q.version != APP_PROTO_VERSION)
+                serve_fail(lineno, "%s", "this program speaks protocol version 1");
+            if (q.dims != cat_point_dims(row) || (q.uniforms != row->uniforms && q.uniforms != 0))
+                serve_fail(lineno, "hello: the row's points have DIMS UNIFORMS = %s "
+                                   "(or UNIFORMS 0 for draw)", want);
+            rng = mc_rng_derive(q.seed, 0u);
+            hello = true;
+            puts("ok");
+            fflush(stdout);
+            continue;
+        }
+        if (!hello)
+            serve_fail(lineno, "%s", "the first command must be hello");
+        if (q.cmd == APP_PROTO_SAMPLE && !row->sample_u)
+            serve_fail(lineno, "%s has no sampler from uniforms: use draw (UNIFORMS 0)", row->name);
+        if (q.cmd == APP_PROTO_INVERT && (!row->invert || row->uniforms > 2))
+            serve_fail(lineno, "%s has no inverse", row->name);
+        serve_batch(s, &q, uniforms, &rng, &buf, &cap, &lineno);
+    }
+    free(buf);
+}
+
 /* BEGIN SNIPPET warp_chi2 */
 static int chi2(const cat_state *s, const args *a)
 {
@@ -239,7 +370,8 @@ int main(int argc, char **argv)
         list();
         return 0;
     }
-    if (strcmp(a.command, "sample") && strcmp(a.command, "pdf") && strcmp(a.command, "chi2"))
+    if (strcmp(a.command, "sample") && strcmp(a.command, "pdf") && strcmp(a.command, "chi2") &&
+        strcmp(a.command, "serve"))
         app_fail(PROG, "unknown command '%s' (list, sample, pdf or chi2)", a.command);
     if (!a.name)
         app_fail(PROG, "%s needs a sampler name (see warp list)", a.command);
@@ -259,6 +391,8 @@ int main(int argc, char **argv)
         sample(&s, &a);
     else if (strcmp(a.command, "pdf") == 0)
         densities(&s);
+    else if (strcmp(a.command, "serve") == 0)
+        serve(&s);
     else
         return chi2(&s, &a);
     return 0;

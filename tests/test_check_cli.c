@@ -1,0 +1,532 @@
+/* tests/test_check_cli.c - `mcbox-check` of $MC_BUILD/bin, the command-line
+ * door of check/check.h: a correct cosine sampler passes through every door
+ * (a catalog row behind `warp serve`, the Python and C examples of
+ * docs/protocol/, a text file of `warp sample`, raw f64 and f32 files), with
+ * the C API's statistic to the bit; wrong samplers and densities are
+ * rejected (exit 1); every malformed file and every misbehaving program is
+ * bad input (exit 2, one line on stderr naming the line, sample or command,
+ * nothing on stdout); the reports (--json, --junit, --plot) are written.
+ * Seeds are fixed (7 for the uniforms, 3 for the files' samples); each
+ * program run has a 120 s limit (timeout(1)).
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp, WEXITSTATUS with system() */
+
+#include "tests/support/mc_test.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "catalog/catalog.h"
+#include "check/check.h"
+#include "tests/support/negctl.h"
+
+enum { CAPTURE = 1 << 16 };
+
+static char tmp[64];       /* this run's scratch directory */
+static char root[2048];    /* the source tree (the current directory) */
+
+typedef struct run {
+    int status;
+    char out[CAPTURE], err[CAPTURE];
+} run;
+
+static run *r_; /* one capture buffer, reused */
+
+/* Runs `mcbox-check ARGS` (shell words) from the build's bin directory. */
+static run *check(const char *args)
+{
+    char cmd[8192], path[256];
+    snprintf(cmd, sizeof cmd, "cd %s/bin && timeout -s KILL 120 ./mcbox-check %s >%s/out 2>%s/err",
+             mc_test_build_dir(), args, tmp, tmp);
+    int rc = system(cmd);
+    r_->status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    snprintf(path, sizeof path, "%s/out", tmp);
+    mc_test_read_text(path, r_->out, sizeof r_->out);
+    snprintf(path, sizeof path, "%s/err", tmp);
+    mc_test_read_text(path, r_->err, sizeof r_->err);
+    return r_;
+}
+
+/* Runs a shell command from the build's bin directory; its exit status. */
+static int shell(const char *fmt, const char *arg)
+{
+    char body[4096], cmd[8192];
+    snprintf(body, sizeof body, fmt, arg);
+    snprintf(cmd, sizeof cmd, "cd %s/bin && %s", mc_test_build_dir(), body);
+    int rc = system(cmd);
+    return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+static void write_file(const char *name, const void *data, size_t len)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", tmp, name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, len, f), len);
+    fclose(f);
+}
+
+static void write_text(const char *name, const char *text)
+{
+    write_file(name, text, strlen(text));
+}
+
+/* The number after "key": in a JSON object (NaN for null or missing). */
+static double json_num(const char *json, const char *key)
+{
+    char k[64];
+    snprintf(k, sizeof k, "\"%s\": ", key);
+    const char *p = strstr(json, k);
+    return p && strncmp(p + strlen(k), "null", 4) != 0 ? strtod(p + strlen(k), NULL) : (double)NAN;
+}
+
+/* Whether r is a pass (status 0) whose JSON says so; prints what it got. */
+static bool passed(const char *what, const run *r)
+{
+    bool ok = r->status == 0 && strstr(r->out, "\"pass\": true") != NULL;
+    printf("%s: status %d, chi-square %.6g, dof %g, p %.4g%s%s", what, r->status,
+           json_num(r->out, "statistic"), json_num(r->out, "dof"), json_num(r->out, "pvalue"),
+           ok ? "\n" : ", stderr: ", ok ? "" : r->err);
+    return ok;
+}
+
+/* Whether r is a verdict of fail (status 1) with a message containing
+ * `why`. */
+static bool rejected(const run *r, const char *why)
+{
+    return r->status == 1 && strstr(r->out, "FAIL") && strstr(r->out, why);
+}
+
+/* Whether r kept the bad-input contract with a message containing `want`
+ * (or one of its alternatives separated by '|'). */
+static bool refused(const char *what, const run *r, const char *want)
+{
+    const char *nl = strchr(r->err, '\n');
+    bool named = false;
+    for (const char *w = want; *w;) {
+        size_t len = strcspn(w, "|");
+        char one[256];
+        snprintf(one, sizeof one, "%.*s", (int)len, w);
+        named = named || strstr(r->err, one) != NULL;
+        w += len + (w[len] == '|');
+    }
+    bool ok = r->status == 2 && r->out[0] == '\0' && strncmp(r->err, "mcbox-check: ", 13) == 0 &&
+              nl && nl[1] == '\0' && named;
+    printf("%s: %s%s", what, ok ? "" : "NOT REFUSED AS REQUIRED: ", r->err);
+    if (!ok)
+        printf("  (status %d, %zu bytes on stdout, expected '%s' in the message)\n", r->status,
+               strlen(r->out), want);
+    return ok;
+}
+
+/* --- the C API's statistic, in process ------------------------------------ */
+
+static cat_state cosine_row;
+
+static void cosine_sample(const double *u, mcbox_sample *out, void *ctx)
+{
+    cosine_row.row->sample_u(ctx, u, out->x);
+}
+
+/* As `warp serve` answers pdf: the direction normalized first. */
+static void cosine_pdf_batch(const double *x, size_t n, double *out, void *ctx)
+{
+    for (size_t i = 0; i < n; i++) {
+        double v[3] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+        double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        v[0] /= l, v[1] /= l, v[2] /= l;
+        out[i] = isfinite(v[0]) ? cat_pdf(ctx, v) : 0.0;
+    }
+}
+
+/* A catalog row behind `warp serve`, through the pipe, passes, and gives
+ * the statistic, dof and p-value of mcbox_check_run on the same sampler
+ * and density in process, to the last bit. */
+static void test_check_cli_exec_matches_c_api(void **state)
+{
+    (void)state;
+    char err[200];
+    assert_true(cat_prepare_named("cosine", &cosine_row, err, sizeof err));
+    mcbox_sampler s = mcbox_sampler_init(MCBOX_HEMISPHERE);
+    s.sample = cosine_sample, s.pdf_batch = cosine_pdf_batch, s.ctx = &cosine_row;
+    mcbox_check_options o = mcbox_check_defaults();
+    o.samples = 200000, o.seed = 7;
+    mcbox_check_result want;
+    assert_int_equal(mcbox_check_run(&s, &o, &want, NULL), 0);
+    run *r = check("--exec './warp serve cosine' --domain hemisphere --n 2e5 --seed 7 --invert --json");
+    assert_seeded(passed("warp serve cosine", r), 7);
+    assert_true(json_num(r->out, "statistic") == want.statistic);
+    assert_true(json_num(r->out, "pvalue") == want.pvalue);
+    assert_int_equal((int)json_num(r->out, "dof"), want.dof);
+    assert_true(json_num(r->out, "invert_error") < 1e-12);
+    printf("C API: chi-square %.17g, p %.17g: the same bits\n", want.statistic, want.pvalue);
+}
+
+/* The shipped examples of docs/protocol/ pass: the Python one (skipped
+ * without python3) and the C one, compiled with the system's cc; both
+ * report their pdf and answer invert. */
+static void test_check_cli_protocol_examples(void **state)
+{
+    (void)state;
+    char args[4096];
+    if (shell("command -v python3 >/dev/null 2>&1%s", "") == 0) {
+        snprintf(args, sizeof args,
+                 "--exec 'python3 %s/docs/protocol/cosine.py' --domain hemisphere --n 1e5 --seed 7 "
+                 "--invert --json", root);
+        run *r = check(args);
+        assert_seeded(passed("docs/protocol/cosine.py", r), 7);
+        assert_true(json_num(r->out, "pdf_reported") == 1e5);
+        assert_true(json_num(r->out, "pdf_mismatch") < 1e-12);
+    } else {
+        printf("docs/protocol/cosine.py: skipped, no python3 on this machine\n");
+    }
+    char cc[4096];
+    snprintf(cc, sizeof cc, "cc -O2 -o %s/cosine %s/docs/protocol/cosine.c -lm", tmp, root);
+    assert_int_equal(shell("%s", cc), 0);
+    snprintf(args, sizeof args, "--exec %s/cosine --domain hemisphere --n 1e5 --seed 7 --invert --json",
+             tmp);
+    run *r = check(args);
+    assert_seeded(passed("docs/protocol/cosine.c", r), 7);
+    assert_true(json_num(r->out, "invert_error") < 1e-12);
+}
+
+/* Points from files: `warp sample` output as text (and with a UTF-8 BOM,
+ * a header and a comment), raw f64 and f32 records of the row's samples,
+ * all against --pdf cosine. */
+static void test_check_cli_sample_files(void **state)
+{
+    (void)state;
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "./warp sample cosine --n 100000 --seed 3 >%s/cos.txt", tmp);
+    assert_int_equal(shell("%s", cmd), 0);
+    char args[512];
+    snprintf(args, sizeof args, "--samples %s/cos.txt --pdf cosine --json", tmp);
+    assert_seeded(passed("warp sample cosine | --samples", check(args)), 3);
+    snprintf(cmd, sizeof cmd, "{ printf '\\357\\273\\277x,y,z\\r\\n# cosine\\r\\n'; cat %s/cos.txt; } >%s/bom.txt",
+             tmp, tmp);
+    assert_int_equal(shell("%s", cmd), 0);
+    snprintf(args, sizeof args, "--samples %s/bom.txt --pdf cosine --json", tmp);
+    assert_seeded(passed("UTF-8 BOM, header, comment, CRLF", check(args)), 3);
+    /* Raw records of the row's own samples. */
+    cat_state st;
+    char err[200];
+    assert_true(cat_prepare_named("cosine", &st, err, sizeof err));
+    mc_rng rng = mc_rng_derive(3u, 1u);
+    enum { N = 100000 };
+    double *d = malloc(N * 3 * sizeof *d);
+    float *f = malloc(N * 3 * sizeof *f);
+    assert_true(d && f);
+    for (int i = 0; i < N; i++) {
+        cat_sample(&st, &rng, d + 3 * i);
+        for (int j = 0; j < 3; j++)
+            f[3 * i + j] = (float)d[3 * i + j];
+    }
+    write_file("cos.f64", d, N * 3 * sizeof *d); /* x86-64: little-endian already */
+    write_file("cos.f32", f, N * 3 * sizeof *f);
+    free(d);
+    free(f);
+    snprintf(args, sizeof args, "--samples %s/cos.f64 --format f64 --pdf cosine --json", tmp);
+    assert_seeded(passed("raw f64", check(args)), 3);
+    snprintf(args, sizeof args, "--samples - --format f32 --pdf cosine --json <%s/cos.f32", tmp);
+    assert_seeded(passed("raw f32 on stdin", check(args)), 3);
+}
+
+/* --- negative controls --------------------------------------------------- */
+
+/* A tiny C sampler of the cosine lobe, compiled with the system's cc into
+ * the scratch directory as `name`; pdf_answer is the C statement that
+ * answers a pdf item, with z the point's third coordinate. */
+static void build_sampler(const char *name, const char *pdf_answer)
+{
+    static const char head[] =
+        "#include <math.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n"
+        "int main(void) {\n  char line[512], cmd[16]; long k; const double pi = 3.14159265358979324;\n"
+        "  while (fgets(line, sizeof line, stdin)) {\n"
+        "    if (strncmp(line, \"hello\", 5) == 0) puts(\"ok\");\n"
+        "    else if (sscanf(line, \"%15s %ld\", cmd, &k) == 2)\n"
+        "      for (long i = 0; i < k && fgets(line, sizeof line, stdin); i++) {\n"
+        "        double v[3] = {0, 0, 0}; char *p = line;\n"
+        "        for (int j = 0; j < 3; j++) v[j] = strtod(p, &p);\n"
+        "        if (cmd[0] == 's') { double r = sqrt(v[0]), phi = 2 * pi * v[1];\n"
+        "          printf(\"%.17g %.17g %.17g\\n\", r * cos(phi), r * sin(phi), sqrt(1 - v[0])); }\n"
+        "        else { double z = v[2]; (void)pi; ";
+    static const char tail[] = "; }\n      }\n    fflush(stdout);\n  }\n  return 0;\n}\n";
+    char src[64], cmd[512];
+    snprintf(src, sizeof src, "%s.c", name);
+    char *text = malloc(sizeof head + strlen(pdf_answer) + sizeof tail);
+    assert_non_null(text);
+    snprintf(text, sizeof head + strlen(pdf_answer) + sizeof tail, "%s%s%s", head, pdf_answer, tail);
+    write_text(src, text);
+    free(text);
+    snprintf(cmd, sizeof cmd, "cc -O2 -o %s/%s %s/%s -lm", tmp, name, tmp, src);
+    assert_int_equal(shell("%s", cmd), 0);
+}
+
+/* Wrong samplers and densities must be rejected (exit 1) with the message
+ * of the check that caught them. */
+static void test_check_cli_negative_controls(void **state)
+{
+    negctl *t = *state;
+    char args[1024];
+    bool all = true;
+    /* A cosine sampler whose density is z, not z / pi: it integrates to pi. */
+    build_sampler("nopi", "printf(\"%.17g\\n\", z >= 0 ? z : 0.0)");
+    snprintf(args, sizeof args, "--exec %s/nopi --domain hemisphere --n 2e4 --seed 7", tmp);
+    run *r = check(args);
+    printf("%s", r->out);
+    all &= negctl_record(t, "C cosine sampler, pdf without 1/pi", "normalization (exit 1)",
+                         rejected(r, "integrates to 3.14159"));
+    /* Uniform hemisphere samples checked against the cosine density. */
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "./warp sample hemisphere --n 100000 --seed 3 >%s/hemi.txt", tmp);
+    assert_int_equal(shell("%s", cmd), 0);
+    snprintf(args, sizeof args, "--samples %s/hemi.txt --pdf cosine", tmp);
+    r = check(args);
+    printf("%s", r->out);
+    all &= negctl_record(t, "hemisphere samples against --pdf cosine", "chi-square (exit 1)",
+                         rejected(r, "chi-square"));
+    /* Densities that are negative or NaN somewhere: a failed verdict. */
+    build_sampler("negpdf", "printf(\"%.17g\\n\", z < 0.5 ? -1.0 : z / pi)");
+    snprintf(args, sizeof args, "--samples %s/cos.txt --pdf-exec %s/negpdf --domain hemisphere", tmp,
+             tmp);
+    r = check(args);
+    printf("%s", r->out);
+    all &= negctl_record(t, "a density that is negative below z = 0.5", "density values (exit 1)",
+                         rejected(r, "negative or non-finite"));
+    build_sampler("nanpdf", "if (z < 0.5) puts(\"nan\"); else printf(\"%.17g\\n\", z / pi)");
+    snprintf(args, sizeof args, "--samples %s/cos.txt --pdf-exec %s/nanpdf --domain hemisphere", tmp,
+             tmp);
+    r = check(args);
+    printf("%s", r->out);
+    all &= negctl_record(t, "a density that is NaN below z = 0.5", "density values (exit 1)",
+                         rejected(r, "negative or non-finite"));
+    assert_true(all);
+}
+
+/* --- bad input ----------------------------------------------------------- */
+
+/* Malformed sample files: each refused with the line or sample named. */
+static void test_check_cli_bad_files(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *name, *text, *format, *want;
+    } cases[] = {
+        {"short.txt", "0 0 1\n0.6 0.8\n", "csv", "line 2: 2 fields, expected 3"},
+        {"long.txt", "0 0 1 0.3183\n", "csv", "line 1: more than 3 fields"},
+        {"text.txt", "# x y z\n0 0 1\n0 zero 1\n", "csv", "line 3: field 2: 'zero' is not a number"},
+        {"nan.txt", "0 0 1\n0 0 nan\n", "csv", "line 2: field 3: 'nan' is not finite"},
+        {"inf.txt", "x y z\n-inf 0 1\n", "csv", "line 2: field 1: '-inf' is not finite"},
+        {"empty.txt", "", "csv", "no samples (the file is empty)"},
+        {"comments.txt", "# nothing\n\n", "csv", "no samples"},
+        {"utf16.txt", "\xff\xfe" "0\0 \0" "0\0", "csv", "line 1: UTF-16"},
+        {"trunc.f32", "\0\0\0\0\0\0\0\0\0\0\x80\x3f" "\0\0\0\0\0", "f32",
+         "sample 2 (byte 12): truncated record"},
+        {"nan.f64", "\0\0\0\0\0\0\xf8\x7f", "f64", "sample 1 (byte 0): coordinate 1 is NaN"},
+    };
+    int failures = 0;
+    char args[512];
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        size_t len = strlen(cases[i].text);
+        if (strstr(cases[i].name, "utf16"))
+            len = 8;
+        if (strstr(cases[i].name, ".f"))
+            len = strstr(cases[i].name, "f32") ? 17 : 8;
+        write_file(cases[i].name, cases[i].text, len);
+        bool interval = strstr(cases[i].name, "f64") != NULL;
+        snprintf(args, sizeof args, "--samples %s/%s --format %s --pdf %s", tmp, cases[i].name,
+                 cases[i].format, interval ? "linear" : "cosine");
+        failures += !refused(cases[i].name, check(args), cases[i].want);
+    }
+    /* A line of a million columns: refused before it is split. */
+    size_t n = 2000000;
+    char *big = malloc(n + 1);
+    assert_non_null(big);
+    for (size_t i = 0; i < n; i += 2)
+        big[i] = '0', big[i + 1] = ' ';
+    big[n] = '\n';
+    write_file("wide.txt", big, n + 1);
+    free(big);
+    snprintf(args, sizeof args, "--samples %s/wide.txt --pdf cosine", tmp);
+    failures += !refused("a million columns", check(args), "line 1: longer than 1 MiB");
+    assert_int_equal(failures, 0);
+}
+
+/* Programs that break the protocol: each run ends with exit 2, the
+ * program killed and reaped, one line naming the command and what is
+ * wrong; nothing on stdout (never a verdict from half the data). */
+static void test_check_cli_bad_programs(void **state)
+{
+    (void)state;
+    /* A shell sampler answering each item with the line ANSWER. */
+#define SH_SAMPLER(answer)                                                                         \
+    "read h; echo ok; while read c k; do i=0; while [ $i -lt $k ]; do read u; " answer            \
+    "; i=$((i+1)); done; done"
+    static const struct {
+        const char *name, *script, *extra, *want;
+    } cases[] = {
+        {"crash", "kill -SEGV $$", "", "killed by signal 11"},
+        {"hang", "sleep 100 & echo $! >HANG_PID; wait", "--timeout 1", "within the 1 s of --timeout"},
+        {"garbage", "while read l; do echo 'hello there'; done", "", "hello: answer 1 of 1: 'hello ...', not 'ok'"},
+        {"few-values", SH_SAMPLER("echo 0 0"), "", "answer 1 of 10: 2 values, expected 3"},
+        {"many-values", SH_SAMPLER("echo 0 0 1 0.3 1 7"), "", "answer 1 of 10: 6 values"},
+        {"text-value", SH_SAMPLER("echo 0 zero 1"), "", "value 2: 'zero' is not a number"},
+        /* K + 1 lines in one write: read together with the K answers. */
+        {"many-lines",
+         "read h; echo ok; while read c k; do i=0; s=''; while [ $i -lt $k ]; do read u; "
+         "s=\"$s 0 0 1\\n\"; i=$((i+1)); done; printf \"$s 0 0 1\\n\"; done",
+         "", "more output than the 10 answer lines asked for"},
+        /* One line too many per item, in separate writes: read with the
+         * answers, or before the next command, or as its answers. */
+        {"many-lines-slow", SH_SAMPLER("echo 0 0 1; echo 0 0 1"), "",
+         "more output than|values, expected 1"},
+        {"few-lines", "read h; echo ok; read c k; read u; echo 0 0 1; sleep 100", "--timeout 1",
+         "1 of 10 answers read"},
+        {"close-stdout", "read h; echo ok; exec >&-; sleep 100", "", "closed its stdout"},
+        {"exit-early", SH_SAMPLER("echo 0 0 1; exit 3"), "", "exited with status 3"},
+        {"error", "read h; echo 'error no such domain'", "", "reported an error: 'no such domain'"},
+        {"binary", "read h; printf 'ok\\n'; head -c 5000 /dev/zero", "", "garbage"},
+    };
+    int failures = 0;
+    char args[1024], file[64];
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        snprintf(file, sizeof file, "%s.sh", cases[i].name);
+        char script[512], *at;
+        snprintf(script, sizeof script, "%s", cases[i].script);
+        if ((at = strstr(script, "HANG_PID")) != NULL) /* the sleep's pid, into the scratch dir */
+            snprintf(at, sizeof script - (size_t)(at - script), "%s/hang.pid; wait", tmp);
+        write_text(file, script);
+        /* Sourced by the shell mcbox-check starts: `exec >&-` and `kill $$`
+         * act on that shell itself, which no parent shell outlives. */
+        snprintf(args, sizeof args, "--exec '. %s/%s' --domain hemisphere --n 10 %s", tmp, file,
+                 cases[i].extra);
+        failures += !refused(cases[i].name, check(args), cases[i].want);
+    }
+    /* The hang was cut at its timeout, and nothing of it is left running:
+     * its sleep (a grandchild) was killed with the program's process group. */
+    assert_int_equal(shell("sleep 0.3; kill -0 $(cat %s/hang.pid) 2>/dev/null", tmp), 1);
+    assert_int_equal(failures, 0);
+#undef SH_SAMPLER
+}
+
+/* Options that make no sense together, or are malformed. */
+static void test_check_cli_bad_options(void **state)
+{
+    (void)state;
+    static const char *const cases[][2] = {
+        {"--exec ./warp", "needs --domain"},
+        {"--exec x --samples y --domain disc", "exclude each other"},
+        {"--samples x", "needs a density"},
+        {"--samples x --pdf cosine --pdf-exec y --domain disc", "not both"},
+        {"--samples x --pdf nope", "unknown catalog row 'nope'"},
+        {"--samples x --pdf phong --param n=-1", "n must be"},
+        {"--exec x --domain plane", "unknown catalog row 'plane'"},
+        {"--exec x --domain disc --param n=1", "--param applies to a catalog row"},
+        {"--exec x --domain disc --interval 0,1", "--domain interval only"},
+        {"--exec x --domain interval --interval 1,0", "finite A < B"},
+        {"--exec x --domain disc --uniforms 17", "--uniforms"},
+        {"--exec x --domain disc --uniforms 0 --invert", "--invert needs uniforms"},
+        {"--exec x --domain disc --atom 1,2,3:0.5", "--atom"},
+        {"--exec x --domain disc --atom 0,0:1.5", "--atom"},
+        {"--exec x --domain disc --cells 0x5", "--cells"},
+        {"--exec x --domain disc --tests 0", "--tests"},
+        {"--exec x --domain disc --timeout 0", "--timeout"},
+        {"--exec x --domain disc --name a/b", "--name"},
+        {"--exec x --domain disc --format f32", "does not take --format"},
+        {"--samples x --pdf cosine --seed 3", "does not take --seed"},
+        {"--exec x --domain disc --json --json", "given twice"},
+        {"--exec x --domain disc --plot /nonexistent-dir", "not a writable directory"},
+        {"--exec x --domain disc --junit /nonexistent-dir/x.xml", "--junit"},
+        {"--samples /nonexistent-file --pdf cosine", "cannot open"},
+        {"--exec 'sleep 100' --domain disc --n 0", "--n"},
+    };
+    int failures = 0;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
+        failures += !refused(cases[i][0], check(cases[i][0]), cases[i][1]);
+    assert_int_equal(failures, 0);
+}
+
+/* --- reports --------------------------------------------------------------- */
+
+/* The human summary names the verdict and the figures; --junit writes a
+ * suite of one test case (a failure element on fail); --plot writes the
+ * data file and a PNG. */
+static void test_check_cli_reports(void **state)
+{
+    (void)state;
+    char args[1024], path[256], text[4096];
+    snprintf(args, sizeof args,
+             "--exec './warp serve linear' --domain interval --interval 0,2 --uniforms 1 --n 2e4 "
+             "--name lin --junit %s/lin.xml --plot %s", tmp, tmp);
+    run *r = check(args);
+    printf("%s%s", r->out, r->err);
+    assert_int_equal(r->status, 0);
+    assert_non_null(strstr(r->out, "lin: pass"));
+    assert_non_null(strstr(r->out, "chi-square"));
+    assert_non_null(strstr(r->out, "pdf integral"));
+    snprintf(path, sizeof path, "%s/lin.xml", tmp);
+    mc_test_read_text(path, text, sizeof text);
+    assert_non_null(strstr(text, "<testsuite name=\"mcbox-check\" tests=\"1\" failures=\"0\""));
+    assert_null(strstr(text, "<failure"));
+    snprintf(path, sizeof path, "%s/lin.png", tmp);
+    mc_test_read_text(path, text, sizeof text);
+    assert_memory_equal(text, "\x89PNG", 4);
+    snprintf(path, sizeof path, "%s/lin.dat", tmp);
+    mc_test_read_text(path, text, sizeof text);
+    assert_non_null(strstr(text, "# lin: chart cells"));
+    /* A 2D chart, and a failing check's JUnit. */
+    snprintf(args, sizeof args,
+             "--samples %s/hemi.txt --pdf cosine --name hemi --junit %s/hemi.xml --plot %s --json",
+             tmp, tmp, tmp);
+    r = check(args);
+    assert_int_equal(r->status, 1);
+    assert_non_null(strstr(r->out, "\"pass\": false"));
+    assert_true(json_num(r->out, "samples") == 1e5);
+    assert_true(json_num(r->out, "pvalue") < 1e-6);
+    snprintf(path, sizeof path, "%s/hemi.xml", tmp);
+    mc_test_read_text(path, text, sizeof text);
+    assert_non_null(strstr(text, "failures=\"1\""));
+    assert_non_null(strstr(text, "<failure message=\"chi-square"));
+    snprintf(path, sizeof path, "%s/hemi.png", tmp);
+    mc_test_read_text(path, text, sizeof text);
+    assert_memory_equal(text, "\x89PNG", 4);
+}
+
+static int setup(void **state)
+{
+    if (negctl_group_setup(state) != 0 || !getcwd(root, sizeof root))
+        return -1;
+    snprintf(tmp, sizeof tmp, "/tmp/mcbox-check-cli-XXXXXX");
+    r_ = malloc(sizeof *r_);
+    return mkdtemp(tmp) && r_ ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", tmp);
+    (void)!system(cmd);
+    free(r_);
+    return negctl_group_teardown(state);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_check_cli_exec_matches_c_api),
+        cmocka_unit_test(test_check_cli_protocol_examples),
+        cmocka_unit_test(test_check_cli_sample_files),
+        cmocka_unit_test(test_check_cli_negative_controls),
+        cmocka_unit_test(test_check_cli_bad_files),
+        cmocka_unit_test(test_check_cli_bad_programs),
+        cmocka_unit_test(test_check_cli_bad_options),
+        cmocka_unit_test(test_check_cli_reports),
+    };
+    return cmocka_run_group_tests_name("test_check_cli", tests, setup, teardown);
+}
