@@ -57,8 +57,21 @@ static double time_command(const char *cmd, int *status)
     return app_median(t, REPS);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    /* No options: the table is fixed. Anything else is a mistake to hear of. */
+    if (argc > 1) {
+        if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+            puts("usage: bench_check   (samples per second through the check's doors; no options)");
+            return 0;
+        }
+        if (strcmp(argv[1], "--version") == 0) {
+            puts("bench_check (mcbox) 0.1.0");
+            return 0;
+        }
+        fprintf(stderr, "bench_check: unknown argument '%s' (it takes none; see --help)\n", argv[1]);
+        return 2;
+    }
     mcbox_sampler s = mcbox_sampler_init(MCBOX_HEMISPHERE);
     s.sample = cosine_sample, s.pdf = cosine_pdf;
     mcbox_check_options o = mcbox_check_defaults();
