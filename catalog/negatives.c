@@ -118,7 +118,6 @@ static double phong_pdf(const cat_state *s, const double x[3])
     .point = CAT_DIRECTION, .uniforms = 2, .sample_u = smp, .pdf = density,                        \
     .chart = CAT_CHART_DIRECTION, .lo = 0.0, .hi = 1.0, .wrong = what
 
-/* BEGIN SNIPPET catalog_negatives */
 static const cat_row negatives[] = {
     {HEMI("wrong-cosine-no-pi", "cosine density without its 1/pi", cosine_sample,
           cosine_no_pi_pdf),
@@ -144,7 +143,6 @@ static const cat_row negatives[] = {
      .point = CAT_REAL, .uniforms = 1, .sample_u = linear_no_sqrt_sample, .pdf = linear_pdf,
      .chart = CAT_CHART_LINE, .hi = 2.0, .wrong = "density x/2 sampled as 2u (no square root)"},
 };
-/* END SNIPPET catalog_negatives */
 
 size_t cat_negative_count(void)
 {
