@@ -182,10 +182,16 @@ static bool in_triangle(const double x[3])
     return x[0] >= 0.0 && x[1] >= 0.0 && x[0] + x[1] <= 1.0 + PLANAR_SLACK;
 }
 
+/* Whether the chart point p lies beyond the triangle's hypotenuse. */
+static bool masked(const mcbox_check *c, const double p[2])
+{
+    return c->s.domain.kind == MCBOX_TRIANGLE && !(p[0] + p[1] <= 1.0);
+}
+
 static double chart_density(const double p[2], void *ctx)
 {
     const mcbox_check *c = ctx;
-    if (c->s.domain.kind == MCBOX_TRIANGLE && !(p[0] + p[1] <= 1.0))
+    if (masked(c, p))
         return 0.0;
     return cat_chart_density_of(&c->st, p, user_density, ctx);
 }
@@ -367,31 +373,22 @@ static void remember(mcbox_check *c, uint64_t *first, uint64_t count_before, con
     }
 }
 
-/* The user's density at the points of samples that need it (a reported
- * pdf or a weight to check), in batches when it comes that way. */
-static void densities_at(mcbox_check *c, const mcbox_sample *smp, size_t n, double *out)
+/* The user's density, asked of pdf_batch BATCH points at a time, at the
+ * points at(i, src) gives for i < n; where it gives NULL no density is
+ * needed and out[i] is left as it is. Returns -1 when out of memory. */
+typedef const double *(*point_at)(size_t i, const void *src);
+
+static int batch_densities(const mcbox_check *c, size_t n, point_at at, const void *src,
+                           double *out)
 {
-    if (c->s.pdf) {
-        for (size_t i = 0; i < n; i++)
-            out[i] = c->s.pdf(smp[i].x, c->s.ctx);
-        return;
-    }
     double *pts = malloc(BATCH * 3 * sizeof *pts);
     size_t *idx = malloc(BATCH * sizeof *idx);
-    if (!pts || !idx) {
-        for (size_t i = 0; i < n; i++)
-            out[i] = (double)NAN;
-        free(pts);
-        free(idx);
-        return;
-    }
+    int status = pts && idx ? 0 : -1;
     size_t m = 0;
-    for (size_t i = 0; i <= n; i++) {
-        bool need = i < n && smp[i].atom < 0 && !isnan(smp[i].pdf);
-        if (i < n)
-            out[i] = (double)NAN;
-        if (need) {
-            memcpy(pts + m * (size_t)c->dims, smp[i].x, (size_t)c->dims * sizeof *pts);
+    for (size_t i = 0; status == 0 && i <= n; i++) {
+        const double *x = i < n ? at(i, src) : NULL;
+        if (x) {
+            memcpy(pts + m * (size_t)c->dims, x, (size_t)c->dims * sizeof *pts);
             idx[m++] = i;
         }
         if (m == BATCH || (i == n && m > 0)) {
@@ -404,6 +401,30 @@ static void densities_at(mcbox_check *c, const mcbox_sample *smp, size_t n, doub
     }
     free(pts);
     free(idx);
+    return status;
+}
+
+/* A sample's point where the check needs the density there: a reported
+ * pdf to compare (atoms have none). */
+static const double *reported_point(size_t i, const void *src)
+{
+    const mcbox_sample *q = (const mcbox_sample *)src + i;
+    return q->atom < 0 && !isnan(q->pdf) ? q->x : NULL;
+}
+
+/* The user's density at the points of samples that need it (a reported
+ * pdf or a weight to check), in batches when it comes that way; NaN where
+ * it was not asked for (or memory ran out). */
+static void densities_at(mcbox_check *c, const mcbox_sample *smp, size_t n, double *out)
+{
+    if (c->s.pdf) {
+        for (size_t i = 0; i < n; i++)
+            out[i] = c->s.pdf(smp[i].x, c->s.ctx);
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        out[i] = (double)NAN;
+    (void)batch_densities(c, n, reported_point, smp, out);
 }
 
 int mcbox_check_add(mcbox_check *c, const mcbox_sample *smp, const double *u, size_t n)
@@ -519,6 +540,18 @@ static double record_point(const double x[3], void *ctx)
     return 1.0;
 }
 
+/* The quadrature nodes' points, and where the chart maps a node to none
+ * (its Jacobian is 0) no density is needed. */
+typedef struct nodes {
+    const double *pts, *jac;
+} nodes;
+
+static const double *node_point(size_t at, const void *src)
+{
+    const nodes *nd = src;
+    return nd->jac[at] != 0.0 ? nd->pts + at * 3 : NULL;
+}
+
 /* Cell probabilities from pdf_batch: the tensor Gauss-Legendre rule of
  * quad_order points per axis on every cell, the chart's Jacobian at each
  * node times the density there. The nodes' points are gathered first, so
@@ -551,7 +584,7 @@ static int batch_probs(mcbox_check *c, double *prob)
             double w = gw[i] * (dims == 2 ? gv[j] : 1.0);
             recorder rec = {pts + at * 3, false};
             double jv = 0.0;
-            if (!(c->s.domain.kind == MCBOX_TRIANGLE && !(p[0] + p[1] <= 1.0)))
+            if (!masked(c, p))
                 jv = cat_chart_density_of(&c->st, p, record_point, &rec);
             if (!rec.called)
                 memset(pts + at * 3, 0, 3 * sizeof *pts);
@@ -559,33 +592,13 @@ static int batch_probs(mcbox_check *c, double *prob)
         }
     }
     /* Only the nodes the chart maps to a point are sent. */
-    double *packed = malloc(BATCH * 3 * sizeof *packed);
-    size_t *idx = malloc(BATCH * sizeof *idx);
-    if (!packed || !idx) {
-        free(packed);
-        free(idx);
+    for (size_t at = 0; at < total; at++)
+        vals[at] = 0.0;
+    nodes nd = {pts, jac};
+    if (batch_densities(c, total, node_point, &nd, vals) != 0) {
         status = -1;
         goto done;
     }
-    size_t m = 0;
-    for (size_t at = 0; at <= total; at++) {
-        if (at < total) {
-            vals[at] = 0.0;
-            if (jac[at] != 0.0) {
-                memcpy(packed + m * (size_t)c->dims, pts + at * 3, (size_t)c->dims * sizeof *packed);
-                idx[m++] = at;
-            }
-        }
-        if (m == BATCH || (at == total && m > 0)) {
-            double out[BATCH];
-            c->s.pdf_batch(packed, m, out, c->s.ctx);
-            for (size_t k = 0; k < m; k++)
-                vals[idx[k]] = out[k];
-            m = 0;
-        }
-    }
-    free(packed);
-    free(idx);
     for (int cell = 0; cell < cells; cell++) {
         double sum = 0.0;
         for (int k = 0; k < per; k++) {

@@ -147,15 +147,6 @@ typedef struct app {
 
 /* --- options ------------------------------------------------------------ */
 
-static const char *option_value(int argc, char **argv, int *i, size_t len)
-{
-    if (argv[*i][len] == '=')
-        return argv[*i] + len + 1;
-    if (*i + 1 >= argc)
-        app_fail(PROG, "%s needs a value", argv[*i]);
-    return argv[++*i];
-}
-
 /* Stores the value of a string option given at most once. */
 static void once(const char **dest, const char *v, const char *name)
 {
@@ -193,7 +184,7 @@ static void parse_option(args *a, int argc, char **argv, int *i, bool *seen_alph
                            &a->interval, &a->name, &a->junit, &a->plot};
     for (size_t k = 0; k < sizeof strings / sizeof strings[0]; k++)
         if (strlen(strings[k]) == len && strncmp(s, strings[k], len) == 0) {
-            once(dest[k], option_value(argc, argv, i, len), strings[k]);
+            once(dest[k], app_option_value(PROG, argc, argv, i, len), strings[k]);
             return;
         }
 #define IS(name) (len == strlen(name) && strncmp(s, name, len) == 0)
@@ -213,7 +204,7 @@ static void parse_option(args *a, int argc, char **argv, int *i, bool *seen_alph
     const char *v = NULL;
     if (IS("--param") || IS("--atom")) {
         bool param = IS("--param");
-        v = option_value(argc, argv, i, len);
+        v = app_option_value(PROG, argc, argv, i, len);
         if (!*v)
             app_fail(PROG, "%s: empty value", param ? "--param" : "--atom");
         if (param ? a->n_params == MAX_PARAMS : a->n_atoms == MAX_ATOMS)
@@ -236,7 +227,7 @@ static void parse_option(args *a, int argc, char **argv, int *i, bool *seen_alph
             app_fail(PROG, "unknown option '%.*s' (see --help)", (int)len, s);
         app_fail(PROG, "unexpected argument '%s' (see --help)", s);
     }
-    v = option_value(argc, argv, i, len);
+    v = app_option_value(PROG, argc, argv, i, len);
     ONCE(seen[which], valued[which]);
     uint64_t u;
     double d;

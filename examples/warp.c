@@ -61,16 +61,6 @@ typedef struct args {
     double alpha;
 } args;
 
-/* The value of option argv[*i] ("--opt v" or "--opt=v"). */
-static const char *option_value(int argc, char **argv, int *i, size_t len)
-{
-    if (argv[*i][len] == '=')
-        return argv[*i] + len + 1;
-    if (*i + 1 >= argc)
-        app_fail(PROG, "%s needs a value", argv[*i]);
-    return argv[++*i];
-}
-
 static bool is_option(const char *a, const char *name)
 {
     size_t len = strlen(name);
@@ -93,23 +83,23 @@ static args parse(int argc, char **argv)
         if (is_option(s, "--param")) {
             if (a.n_params == MAX_PARAMS)
                 app_fail(PROG, "more than %d --param options", MAX_PARAMS);
-            a.params[a.n_params++] = option_value(argc, argv, &i, 7);
+            a.params[a.n_params++] = app_option_value(PROG, argc, argv, &i, 7);
         } else if (is_option(s, "--n") || is_option(s, "--samples")) {
-            const char *v = option_value(argc, argv, &i, s[3] == 'a' ? 9 : 3);
+            const char *v = app_option_value(PROG, argc, argv, &i, s[3] == 'a' ? 9 : 3);
             if (!app_parse_count(v, APP_MAX_SAMPLES, &a.n))
                 app_fail(PROG, "--n: '%s' is not a whole number from 1 to 1e13", v);
             if (a.have_n)
                 app_fail(PROG, "--n given twice (or with its synonym --samples)");
             a.have_n = true;
         } else if (is_option(s, "--seed")) {
-            const char *v = option_value(argc, argv, &i, 6);
+            const char *v = app_option_value(PROG, argc, argv, &i, 6);
             if (!app_parse_seed(v, &a.seed))
                 app_fail(PROG, "--seed: '%s' is not a whole number from 0 to 2^64 - 1", v);
             if (a.have_seed)
                 app_fail(PROG, "--seed given twice");
             a.have_seed = true;
         } else if (is_option(s, "--alpha")) {
-            const char *v = option_value(argc, argv, &i, 7);
+            const char *v = app_option_value(PROG, argc, argv, &i, 7);
             if (!app_parse_double(v, &a.alpha) || !(a.alpha > 0.0 && a.alpha < 1.0))
                 app_fail(PROG, "--alpha: '%s' is not a number in (0, 1)", v);
             if (a.have_alpha)

@@ -321,3 +321,12 @@ void app_table_row(const app_table *t, const char *method, mc_estimate e, double
     }
     fputc('\n', t->out);
 }
+
+const char *app_option_value(const char *prog, int argc, char **argv, int *i, size_t len)
+{
+    if (argv[*i][len] == '=')
+        return argv[*i] + len + 1;
+    if (*i + 1 >= argc)
+        app_fail(prog, "%s needs a value", argv[*i]);
+    return argv[++*i];
+}

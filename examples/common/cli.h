@@ -70,6 +70,12 @@ bool app_selected(const char *choice, const char *name);
 int app_parse(const char *prog, const char *usage, int argc, char **argv, const app_opt *opts,
               size_t n, const char **positional, int max_positional);
 
+/* For programs that parse their own argv (subcommands): the value of the
+ * option argv[*i] whose name is len characters long, given as "--opt=v"
+ * or "--opt v" (then *i moves past it). A missing value is "prog: --opt
+ * needs a value" on stderr and exit 2. */
+const char *app_option_value(const char *prog, int argc, char **argv, int *i, size_t len);
+
 /* Parses a whole number in APP_NUMBER_GRAMMAR within [min, max]. Returns
  * false for anything else. */
 bool app_parse_uint(const char *s, uint64_t min, uint64_t max, uint64_t *out);
