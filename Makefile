@@ -59,6 +59,8 @@ help:
 	@echo "               (PREFIX=/usr/local; BINDIR, LIBDIR, INCLUDEDIR, MANDIR, PKGCONFIGDIR; DESTDIR)"
 	@echo "make uninstall remove what make install put there (same PREFIX and DESTDIR)"
 	@echo "make outside-check  install into build/stage, then build and test outside/ against it"
+	@echo "make exercises every reader's exercise: stubs and slips must fail, references pass"
+	@echo "make exercise NAME=cosine  judge your answer to one exercise (exercises/README.md)"
 
 deps:
 	@sh tools/deps.sh $(DEB_PACKAGES)
@@ -113,3 +115,4 @@ include mk/rules.mk
 include mk/pgo.mk
 include mk/install.mk
 include mk/fuzz.mk
+include mk/exercises.mk

@@ -10,11 +10,14 @@
 --                           line number and a link to the whole file.
 --   ```{.run id=pi}
 --   pi --samples 1e6 --seed 1 --csv
---   ```                     a command run from the build's bin/ (and tests/),
+--   ```                     a command run from the build's bin/ (tests/,
+--                           exercises/),
 --                           shown with exactly what it printed; .hide keeps
 --                           it out of the page (a run that only feeds
 --                           numbers), stderr=true shows stderr too,
---                           status=N expects that exit status (default 0).
+--                           status=N expects that exit status (default 0);
+--                           MC_BUILD and MC_SOURCE name the build and the
+--                           source tree.
 --   [?]{.num run=pi col=estimate where=method=plain fmt=%.5f}
 --                           a number in a sentence: one cell of a run's CSV
 --                           output (row=K or where=COLUMN=VALUE picks the
@@ -251,8 +254,8 @@ local function run(el)
     local q = function(ext) return shell_quote(cached .. ext) end
     local script = "exec 9>" .. q(".lock") .. " && flock 9 && [ -e " .. q(".out") .. " ] || { " ..
       "t0=$(date +%s%N); cd " .. shell_quote(rundir) .. " && PATH=" ..
-      shell_quote(build .. "/bin:" .. build .. "/tests") .. ":\"$PATH\" " ..
-      "MC_BUILD=" .. shell_quote(build) .. " bash -o pipefail -c " .. shell_quote(cmd) ..
+      shell_quote(build .. "/bin:" .. build .. "/tests:" .. build .. "/exercises") .. ":\"$PATH\" " ..
+      "MC_BUILD=" .. shell_quote(build) .. " MC_SOURCE=" .. shell_quote(src_root) .. " bash -o pipefail -c " .. shell_quote(cmd) ..
       " >" .. q(".tmp") .. (with_err and " 2>&1" or " 2>" .. q(".err")) ..
       "; echo $? >" .. q(".rc") ..
       "; echo $((($(date +%s%N) - t0) / 1000000)) >" .. q(".ms") ..

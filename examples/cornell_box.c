@@ -1,6 +1,6 @@
-/* examples/cornell_box.c - the Cornell box of "Ray Tracing: The Rest of Your
- * Life", rendered with the book's mixture of light and material densities
- * (chapters 8-10) or any of six other strategies that must agree with it:
+/* examples/cornell_box.c - the Cornell box of Shirley, "Ray Tracing: The
+ * Rest of Your Life" (v1.123), rendered with that book's mixture of light
+ * and material densities (its chapters 8-10; this book's #ch-cornell) or any of six other strategies that must agree with it:
  * among them light tracing and bidirectional path tracing (render/bdpt.h),
  * and with --strategy bdpt:S,T one bidirectional strategy alone.
  *
@@ -70,7 +70,9 @@ typedef struct options {
 
 static options parse(int argc, char **argv)
 {
-    options o = {"book", "mixture", "stratified", "2", "cornell.png", NULL, 600, 50, 0, 100, 1, false, false};
+    options o = {.scene = "book", .strategy = "mixture", .sampler = "stratified", .gamma = "2",
+                 .out = "cornell.png", .reference = NULL, .width = 600, .depth = 50, .threads = 0,
+                 .spp = 100, .seed = 1, .csv = false, .roulette = false};
     const app_opt opts[] = {
         {"--scene", APP_CHOICE, &o.scene, "the scene (default book)", rt_scene_names, 0, 0},
         {"--width", APP_INT, &o.width, "image width and height in pixels (default 600)", NULL, 1, 65536},

@@ -1,5 +1,6 @@
-/* examples/cos_cubed.c - chapter 2/5: the integral of cos^3 theta over the
- * hemisphere, exactly pi / 2, by uniform directions (density 1 / (2 pi))
+/* examples/cos_cubed.c - this book's #ch-scattering (after Shirley, "Ray
+ * Tracing: The Rest of Your Life" (v1.123), chapter 5 "Generating Random
+ * Directions"): the integral of cos^3 theta over the hemisphere, exactly pi / 2, by uniform directions (density 1 / (2 pi))
  * and by cosine-weighted directions (density cos theta / pi).
  *
  * What it shows: importance sampling on the sphere of directions. The

@@ -1,4 +1,4 @@
-/* examples/estimate_halfway.c - chapter 2's experiment with an integrand
+/* examples/estimate_halfway.c - this book's #ch-integration: an integrand
  * that has an antiderivative nobody wants to write down: for
  *
  *     f(x) = exp(-x / 2pi) sin^2 x  on [0, 2pi],

@@ -1,4 +1,6 @@
-/* examples/integrate_x_sq.c - chapter 2, "One Dimensional MC Integration":
+/* examples/integrate_x_sq.c - this book's #ch-integration, after Shirley,
+ * "Ray Tracing: The Rest of Your Life" (v1.123), chapter 2 "One Dimensional
+ * MC Integration":
  * the integral of x^2 over [0, 2] (exactly 8/3) by importance sampling with
  * three densities:
  *

@@ -1,5 +1,6 @@
-/* examples/inverse_cdf.c - inverse transform sampling, the lecture's two
- * examples (chapter 2, "One Dimensional MC Integration"):
+/* examples/inverse_cdf.c - inverse transform sampling, the two examples of
+ * the lecture slides "Solving the Rendering Equation" (this book's
+ * #ch-integration):
  *
  *   sine            p(x) = sin(x)/2 on [0, pi]: P(x) = (1 - cos x)/2, so
  *                   x = acos(1 - 2u) (samplers/warp1d.h);

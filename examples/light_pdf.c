@@ -1,4 +1,6 @@
-/* examples/light_pdf.c - chapter 7, "Sampling Lights Directly": the
+/* examples/light_pdf.c - this book's #ch-lights, after Shirley, "Ray
+ * Tracing: The Rest of Your Life" (v1.123), chapter 7 "Sampling Lights
+ * Directly": the
  * irradiance at a point from a parallelogram light, E = integral of
  * L cos theta over the directions that hit the light, estimated two ways:
  *

@@ -1,4 +1,4 @@
-/* examples/log_sin.c - chapter 2's example of an integral with no
+/* examples/log_sin.c - this book's #ch-integration: an integral with no
  * elementary antiderivative: the integral of ln(sin x) over [0, pi], which
  * is -pi ln 2 (Euler), although the integrand is -infinity at both ends.
  *

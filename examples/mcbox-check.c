@@ -69,7 +69,8 @@ static const char USAGE[] =
     "  --domain D         interval, square, disc, triangle, sphere, hemisphere, or a row\n"
     "                     of the catalog (warp list)\n"
     "  --interval A,B     the interval's ends (default 0,1)\n"
-    "  --uniforms K       uniforms per sample, 0 to 16 (default 2, 1 for an interval);\n"
+    "  --uniforms K       uniforms per sample, 0 to 16 (default 2, 1 for an interval, the\n"
+    "                     row's own for a catalog row);\n"
     "                     0: the program draws from its own generator\n"
     "  --invert           also check the program's inverse: invert(sample(u)) = u\n"
     "  --atom 'x,y,z:m'   a discrete atom at that point with probability m (repeatable)\n"
@@ -392,7 +393,9 @@ static void setup(app *c)
     const char *dom = a->pdf ? a->pdf : a->domain;
     mcbox_domain_kind kind;
     static cat_state st; /* large and self-referencing: not on the stack */
-    if (!mcbox_domain_parse(dom, &kind) || kind == MCBOX_CATALOG) {
+    /* --pdf always names a catalog row, even one called like a domain
+     * ("hemisphere", "square"): the row is the density. */
+    if (a->pdf || !mcbox_domain_parse(dom, &kind) || kind == MCBOX_CATALOG) {
         kind = MCBOX_CATALOG;
         prepare_row(c, dom, &st);
         c->row_state = &st;
@@ -415,6 +418,10 @@ static void setup(app *c)
         c->s.domain.a = lo, c->s.domain.b = hi;
     }
     c->dims = mcbox_domain_dims(&c->s.domain);
+    /* A catalog row's program takes what the row's own sampler takes:
+     * `warp serve ROW` refuses any other count. */
+    if (kind == MCBOX_CATALOG)
+        c->s.uniforms = st.row->uniforms;
     if (a->have_uniforms)
         c->s.uniforms = a->uniforms;
     if (a->invert && c->s.uniforms == 0)
@@ -1005,6 +1012,7 @@ static void print_json(FILE *f, const app *c, const mcbox_check_result *r)
     for (size_t k = 0; k < sizeof counts / sizeof counts[0]; k++)
         fprintf(f, "\"%s\": %llu, ", counts[k].key, (unsigned long long)counts[k].v);
     json_number(f, "pdf_integral", r->pdf_integral, false);
+    json_number(f, "pdf_integral_error", r->pdf_integral_error, false);
     json_number(f, "pdf_mismatch", r->pdf_mismatch, false);
     json_number(f, "weight_mean", r->weight_mean, false);
     json_number(f, "weight_mismatch", r->weight_mismatch, false);
@@ -1021,9 +1029,11 @@ static void print_summary(FILE *f, const app *c, const mcbox_check_result *r)
     fprintf(f, "  samples %llu: %llu outside, %llu non-finite, %llu in zero cells\n",
             (unsigned long long)r->samples, (unsigned long long)r->outside,
             (unsigned long long)r->nonfinite, (unsigned long long)r->in_zero_cells);
-    fprintf(f, "  pdf integral %.9g; pdf mismatch %.3g (%llu reported); bad pdf %llu\n",
-            r->pdf_integral, r->pdf_mismatch, (unsigned long long)r->pdf_reported,
-            (unsigned long long)r->bad_pdf);
+    fprintf(f, "  pdf integral %.9g", r->pdf_integral);
+    if (r->pdf_integral_error > 0.0)
+        fprintf(f, " (quadrature error %.2g)", r->pdf_integral_error);
+    fprintf(f, "; pdf mismatch %.3g (%llu reported); bad pdf %llu\n", r->pdf_mismatch,
+            (unsigned long long)r->pdf_reported, (unsigned long long)r->bad_pdf);
     if (!isnan(r->invert_error))
         fprintf(f, "  inverse error %.3g\n", r->invert_error);
     if (!r->pass)
@@ -1084,7 +1094,7 @@ static void gp_quoted(FILE *f, const char *dir, const char *name, const char *ex
 
 static void plot_script(FILE *f, const app *c, const mcbox_check_table *t, const mcbox_check_result *r)
 {
-    fputs("set terminal pngcairo size 1500,480 font ',9'\nset output ", f);
+    fputs("set terminal pngcairo noenhanced size 1500,480 font ',9'\nset output ", f);
     gp_quoted(f, c->a.plot, c->a.name, "png");
     fprintf(f, "\nset multiplot layout 1,3 title '%s: %s, chi-square %.6g, %d dof, p = %.3g'\n",
             c->a.name, r->pass ? "pass" : "fail", r->statistic, r->dof, r->pvalue);

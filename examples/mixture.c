@@ -1,4 +1,6 @@
-/* examples/mixture.c - chapter 8, "Mixture Densities": half cosine, half
+/* examples/mixture.c - this book's #ch-mixture, after Shirley, "Ray
+ * Tracing: The Rest of Your Life" (v1.123), chapter 8 "Mixture Densities":
+ * half cosine, half
  * light. A pdf_mixture picks the cosine pdf or the light's pdf with
  * probability 1/2 each and evaluates 0.5 cos/pi + 0.5 p_light for EVERY
  * direction, because either could have produced it. Two integrands at the

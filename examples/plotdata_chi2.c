@@ -1,7 +1,7 @@
 /* examples/plotdata_chi2.c - the data of the chi-square figures of `make plots`.
  *
  * Shows how the chi-square test of a sampler works and that it is both
- * calibrated and powerful (chapter 5, "Generating Random Directions"):
+ * calibrated and powerful (this book's #ch-tests):
  *   cells    one test of the cosine-weighted hemisphere sampler (the book's
  *            mapping) in the (cos theta, phi) rectangle, where a density per
  *            unit solid angle is a plain density: per cell the observed count,

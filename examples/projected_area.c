@@ -1,6 +1,7 @@
 /* examples/projected_area.c - the mean projected area of a convex body
  * over all directions is a quarter of its surface area (Cauchy's formula;
- * the SAH post uses it to turn surface areas into hit probabilities). For
+ * the Cranberry Lair blog post on SAH BVH construction uses it to turn
+ * surface areas into hit probabilities). For
  * a 2.385 x 1 x 0.5 box (area 8.155, mean shadow 2.03875) and a sphere of
  * radius 1 (area 4 pi, shadow always pi), two estimates each:
  *

@@ -1,4 +1,4 @@
-/* examples/qmc.c - chapter 13, "Quasi-Monte Carlo": integrals over the unit
+/* examples/qmc.c - this book's #ch-qmc: integrals over the unit
  * cube with closed forms (mc/testfn.h), estimated from random, jittered,
  * Halton and Sobol points, plain and scrambled.
  *

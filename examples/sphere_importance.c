@@ -1,5 +1,6 @@
-/* examples/sphere_importance.c - chapter 2, "MC Integration on the Sphere
- * of Directions": the integral of cos^2 theta over all directions, exactly
+/* examples/sphere_importance.c - this book's #ch-sphere, after Shirley,
+ * "Ray Tracing: The Rest of Your Life" (v1.123), the second chapter 2 "MC
+ * Integration on the Sphere of Directions": the integral of cos^2 theta over all directions, exactly
  * 4 pi / 3, from uniformly distributed directions (density 1 / (4 pi) per
  * unit solid angle), each weighted by f / p = 4 pi cos^2 theta.
  *

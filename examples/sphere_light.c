@@ -1,4 +1,7 @@
-/* examples/sphere_light.c - chapter 10 and the lecture's closing result: a
+/* examples/sphere_light.c - this book's #ch-lights (the sphere light of
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 10) and
+ * the closing result of the lecture slides "Solving the Rendering
+ * Equation": a
  * Lambertian sphere light of flux Phi and radius r lights a point at
  * distance d exactly like a point light of intensity Phi / (4 pi):
  * E = Phi cos theta / (4 pi d^2), as long as the sphere is wholly above the

@@ -1,4 +1,6 @@
-/* examples/sphere_plot.c - chapter 5, "Generating Random Directions":
+/* examples/sphere_plot.c - this book's #ch-sphere (after Shirley, "Ray
+ * Tracing: The Rest of Your Life" (v1.123), chapter 5 "Generating Random
+ * Directions"):
  * uniformly distributed points on the unit sphere, one `x y z` per line,
  * the input of the scatter plot (plots/) that shows them without clumps at
  * the poles.

@@ -144,3 +144,7 @@ _outside-check:
 	+@MAKE='$(MAKE)' B='$(B)' CC='$(CC)' bash tools/outside_check.sh
 
 -include $(shell find $(B)/obj-pic -name '*.d' 2>/dev/null)
+
+# The book's chapter on testing your own sampler compiles a user's program
+# against the static library of this build tree.
+_book: $(PIC_LIB)/libmcbox.a

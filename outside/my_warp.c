@@ -39,6 +39,7 @@ static void concentric_disc(double u1, double u2, double *x, double *y)
     *x = r * cos(phi), *y = r * sin(phi);
 }
 
+/* BEGIN SNIPPET own_c_sampler */
 /* Malley: a uniform disc point has density 1/pi per unit area; lifting
  * it to z = sqrt(1 - r^2) divides areas by cos(theta) = z, so the
  * direction's density is z / pi per unit solid angle. */
@@ -58,6 +59,7 @@ static double pdf(const double *x, void *ctx)
     (void)ctx;
     return x[2] >= 0.0 ? x[2] / PI : 0.0;
 }
+/* END SNIPPET own_c_sampler */
 
 /* The inverse: drop the direction to the disc (x, y), then undo the
  * concentric map wedge by wedge (right/left: |sx| > |sy|, top/bottom). */
@@ -96,6 +98,7 @@ static void sample_no_sqrt(const double *u, mcbox_sample *out, void *ctx)
 
 /* Runs the check; returns 1 when it passed, 0 when it rejected, -1 when
  * it could not run. */
+/* BEGIN SNIPPET own_c_check */
 static int check(const char *name, mcbox_sampler *s)
 {
     mcbox_check_options o = mcbox_check_defaults();
@@ -109,13 +112,16 @@ static int check(const char *name, mcbox_sampler *s)
            r.invert_error, r.pass ? "" : "\n                       why: ", r.message);
     return r.pass ? 1 : 0;
 }
+/* END SNIPPET own_c_check */
 
 int main(void)
 {
     printf("mcbox %s\n", mcbox_version());
+    /* BEGIN SNIPPET own_c_main */
     mcbox_sampler s = mcbox_sampler_init(MCBOX_HEMISPHERE);
     s.sample = sample, s.pdf = pdf, s.invert = invert;
     int good = check("cosine (Malley)", &s);
+    /* END SNIPPET own_c_main */
 
     mcbox_sampler w1 = s;
     w1.pdf = pdf_no_inv_pi;

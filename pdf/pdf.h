@@ -1,12 +1,13 @@
 /* pdf/pdf.h - the book's pdf objects: densities of directions that can be
  * evaluated (value) and sampled (generate).
  *
- * Chapter 8 ("Mixture Densities") and chapter 10 ("Cleaning Up pdf
- * Management") of "Ray Tracing: The Rest of Your Life" give every density
- * the renderer samples from the same two-function interface. Chapter 7
- * ("Sampling Lights Directly") supplies the density toward a parallelogram
- * light, and chapter 10 also the density toward a sphere (a cone of
- * directions) and the list of lights.
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapters 8
+ * ("Mixture Densities") and 10 ("Cleaning Up pdf Management"), give every
+ * density the renderer samples from the same two-function interface; its
+ * chapter 7 ("Sampling Lights Directly") supplies the density toward a
+ * parallelogram light, and its chapter 10 also the density toward a sphere
+ * (a cone of directions) and the list of lights. This book introduces the
+ * interface in #ch-scattering and builds the mixture in #ch-mixture.
  *
  * C has no class hierarchy, so a pdf is a tagged union passed by pointer.
  * Nothing here allocates: constructors return by value, and a mixture or a
@@ -107,8 +108,10 @@ pdf pdf_toward_quad(vec3 origin, vec3 corner, vec3 u, vec3 v);
  * the value stays accurate to a few ulps for arbitrarily small or distant
  * spheres (tested down to R / d = 1e-150).
  * From inside or on the sphere (d <= R) every direction hits it and the
- * pdf is uniform over the whole sphere, 1 / (4 pi) (the book's code
- * computes sqrt of a negative number there and returns NaN). */
+ * pdf is uniform over the whole sphere, 1 / (4 pi) (the formula
+ * cos theta_max = sqrt(1 - R^2 / d^2) of v1.123's chapter 10, and
+ * sphere::pdf_value of release v1.123.0, take the square root of a
+ * negative number there: NaN). */
 pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius);
 
 /* BEGIN SNIPPET pdf_mixture_decl */
@@ -118,9 +121,10 @@ pdf pdf_toward_sphere(vec3 origin, vec3 center, double radius);
  * estimate divided by it is biased by the same factor. generate() picks
  * component i with probability weights[i] and samples it; value() sums
  * over ALL components, because any component may have produced a given
- * direction (chapter 8's "very important detail"). The arrays are
- * borrowed, not copied. n == 0 is invalid (pdf_valid says so); such a
- * pdf's value is 0 everywhere and generate() returns +z. */
+ * direction (the "very important detail" of chapter 8 of Shirley's
+ * v1.123; this book's #ch-mixture). The arrays are borrowed, not copied.
+ * n == 0 is invalid (pdf_valid says so); such a pdf's value is 0
+ * everywhere and generate() returns +z. */
 pdf pdf_mixture(const pdf *const *components, const double *weights, size_t n);
 /* END SNIPPET pdf_mixture_decl */
 
@@ -131,12 +135,14 @@ pdf pdf_mixture(const pdf *const *components, const double *weights, size_t n);
  * returns +z. */
 pdf pdf_list(const pdf *const *items, size_t n);
 
+/* BEGIN SNIPPET pdf_interface */
 /* The density of direction d (unit length) per unit solid angle, >= 0 and
  * finite. */
 double pdf_value(const pdf *p, vec3 d);
 
 /* A unit direction distributed according to p, drawing uniforms from rng. */
 vec3 pdf_generate(const pdf *p, mc_rng *rng);
+/* END SNIPPET pdf_interface */
 
 /* How far outside [0, 1] an edge coordinate of the parallelogram may fall
  * and still count as a hit in pdf_toward_quad's value. A direction
@@ -196,7 +202,7 @@ static inline void pdf_quad_constants(vec3 u, vec3 v, vec3 *normal, vec3 *w, dou
  * ray origin + r d (r > 0) meets the parallelogram, the density 1 / A per
  * unit area becomes dist^2 / (|cos| A) per unit solid angle, because a
  * patch dA at distance dist, tilted by the angle whose cosine is cos,
- * subtends d omega = |cos| dA / dist^2 (chapter 7). */
+ * subtends d omega = |cos| dA / dist^2 (v1.123's chapter 7; #ch-lights). */
 static inline double pdf_quad_density(vec3 origin, double num, vec3 corner, vec3 u, vec3 v,
                                       vec3 normal, vec3 w, double inv_area, vec3 d)
 {

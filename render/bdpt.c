@@ -1,5 +1,6 @@
 /* render/bdpt.c - the two subpaths, their joins and the power heuristic
- * over all of them (Veach's thesis, chapter 10). */
+ * over all of them (Veach's thesis, 1997, its chapter 10; this book's
+ * #ch-caustic). */
 #include "render/bdpt.h"
 
 #include <math.h>
@@ -50,7 +51,7 @@ bool rt_bdpt_camera_importance(const rt_bdpt_ctx *c, vec3 p, size_t *px, double 
     if (!(x >= 0.0 && x < (double)cam->width && y >= 0.0 && y < (double)cam->height))
         return false;
     *px = (size_t)y * (size_t)cam->width + (size_t)x;
-    double cos3 = c->ps->splat_drop_cos3 ? 1.0 : cos_theta * cos_theta * cos_theta;
+    double cos3 = c->ps->neg.splat_drop_cos3 ? 1.0 : cos_theta * cos_theta * cos_theta;
     *importance = 1.0 / (c->pixel_area * cos3);
     return true;
 }
@@ -198,7 +199,7 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
     ok[0] = origin_pdf(c, &x[0]) > 0.0;
     for (int r = 1; r < n; r++)
         ok[r] = joinable(c, &x[r - 1], r - 1, n) && joinable(c, &x[r], r, n);
-    return weight_from(pl, pc, ok, n, s, c->ps->mis_double - 1, n > 2 && x[1].delta);
+    return weight_from(pl, pc, ok, n, s, c->ps->neg.mis_double - 1, n > 2 && x[1].delta);
 }
 
 /* --- the walks ---------------------------------------------------------- */
@@ -393,7 +394,7 @@ static double join_weight(const rt_bdpt_ctx *c, const subpath_pdfs *sp, const rt
     /* x[1]: the second light vertex, the camera subpath's last, or the
      * one before it. */
     const rt_bdpt_vertex *x1 = s >= 2 ? &light[1] : s == 1 ? z : &cam[t - 2];
-    return weight_from(pl, pc, ok, n, s, c->ps->mis_double - 1, n > 2 && x1->delta);
+    return weight_from(pl, pc, ok, n, s, c->ps->neg.mis_double - 1, n > 2 && x1->delta);
 }
 
 static bool is_black(vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
@@ -546,12 +547,12 @@ static int through_vertex(const rt_bdpt_vertex *cam, int nc)
  * is one the weighted render estimates apart: E S* L (the vertices
  * between the camera and the emitter are all glass or mirrors), or
  * E S+ D S+ L with D = cam[jd] (through_vertex; jd = 0 for none). The
- * negative-control hooks of ps keep them in. */
+ * negative-control hooks of ps (ps->neg) keep them in. */
 static bool estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t, int jd)
 {
     if (all_chain(cam, 1, t - 1))
-        return !ps->seen_twice;
-    return jd > 0 && t - 1 >= jd + 2 && all_chain(cam, jd + 1, t - 1) && !ps->through_twice;
+        return !ps->neg.seen_twice;
+    return jd > 0 && t - 1 >= jd + 2 && all_chain(cam, jd + 1, t - 1) && !ps->neg.through_twice;
 }
 
 /* BEGIN SNIPPET bdpt_seen */

@@ -7,7 +7,7 @@
  * to aim at the sphere and the sphere happens to send it to the lamp; a
  * path traced from the lamp through the sphere lands in the caustic every
  * time, and only its last step, to the camera, has to be made by a
- * connection. Veach's thesis (chapter 10, "Bidirectional path tracing")
+ * connection. Veach's thesis (1997; its chapter 10, "Bidirectional path tracing")
  * does both at once:
  *   - a light subpath y_0 .. y_{s-1}: y_0 uniform on the area of an
  *     emitter chosen uniformly (rt_scene_emitters), then cosine-weighted
@@ -62,17 +62,18 @@
 /* With Russian roulette (rt_path_settings.russian_roulette), both
  * subpaths play it from their first bounce on, where the path tracer
  * waits three segments (rt_path_settings.rr_start): every vertex of a
- * subpath costs a shadow ray for each vertex of the other, and on the
- * book's scene starting at once gave 15-25% less error x time than
- * starting at the third bounce. */
+ * subpath costs a shadow ray for each vertex of the other, so a vertex
+ * saved early saves more rays than in a path tracer. (Chosen from trial
+ * renders of the book's scene; `make bench` and this book's #ch-caustic
+ * measure the result, not this choice against the other.) */
 #define RT_BDPT_RR_START 1
 
 /* The weighted render also plays roulette on its shadow rays: a join or
  * splat worth less than this to a pixel sample (in every channel, if
  * nothing is in the way) is traced with probability worth / floor and
- * divided by it, so none adds more than the floor. On the book's scene
- * 0.03 saves 15% of the rays for 4% more error; 0.1 saves 29% for 76%
- * more. */
+ * divided by it, so none adds more than the floor. A larger floor saves
+ * more rays and adds more error; the value was chosen from trial renders
+ * of the book's scene, which no run of the book repeats. */
 #define RT_BDPT_JOIN_FLOOR 0.03
 
 typedef enum rt_bdpt_kind {
@@ -124,8 +125,8 @@ static inline bool rt_bdpt_weighted(const rt_path_settings *ps)
  * camera vertices) for the joined path x[0..n) (x[0] on an emitter or
  * wherever the camera subpath ended, x[n-1] the camera), 2 <= n,
  * 0 <= s < n: p_s^2 / sum_r p_r^2 over the strategies r that can join
- * there. mis_double (the negative-control hook of rt_path_settings) counts
- * strategy mis_double - 1 twice in the sum. */
+ * there. neg.mis_double (the negative-control hook of rt_path_settings)
+ * counts strategy mis_double - 1 twice in the sum. */
 double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, int s);
 
 /* One sample of the pixel whose camera ray is camera_ray: both subpaths,

@@ -1,8 +1,8 @@
 /* render/camera.h - the pinhole camera of the book: vertical field of view,
  * look-from, look-at and an up vector.
  *
- * Every chapter of "Ray Tracing: The Rest of Your Life" from chapter 4 on
- * renders the Cornell box through this camera (from (278, 278, -800) at
+ * Every chapter of Shirley's "Ray Tracing: The Rest of Your Life" (v1.123)
+ * from its chapter 4 on renders the Cornell box through this camera (from (278, 278, -800) at
  * (278, 278, 0), 40 degrees). Image rows count from the top, columns from
  * the left; a point (x, y) of the image plane in pixel units maps to a
  * unit ray direction.

@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "render/names.h"
+
 rt_image *rt_image_create(int width, int height)
 {
     if (width < 1 || height < 1)
@@ -121,12 +123,11 @@ const char *const rt_gamma_names[] = {"2", "2.2", "srgb", NULL};
 
 bool rt_gamma_parse(const char *name, rt_gamma *out)
 {
-    for (int i = 0; rt_gamma_names[i]; i++)
-        if (strcmp(name, rt_gamma_names[i]) == 0) {
-            *out = (rt_gamma)i;
-            return true;
-        }
-    return false;
+    int i = rt_name_index(rt_gamma_names, name);
+    if (i < 0)
+        return false;
+    *out = (rt_gamma)i;
+    return true;
 }
 
 double rt_gamma_encode(double linear, rt_gamma g)

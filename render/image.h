@@ -2,9 +2,10 @@
  *
  * Every pixel keeps the running mean and squared deviations (Welford) of
  * its finite samples in double precision, linear radiance, plus how many
- * non-finite samples were dropped. Chapter 10 of "Ray Tracing: The Rest of
- * Your Life" ends by zeroing a NaN sample's colour, which still divides by
- * the full sample count and darkens the pixel; here such a sample is
+ * non-finite samples were dropped. Shirley's "Ray Tracing: The Rest of
+ * Your Life" (v1.123, chapter 10; de_nan in main.cc of release v1.123.0)
+ * ends by zeroing a NaN sample's colour, which still divides by the full
+ * sample count and darkens the pixel; here such a sample is
  * dropped and counted, and the pixel is the mean of the samples that are
  * left. Display encoding (the book's gamma 2 square root, gamma 2.2 or
  * sRGB) happens only on output.

@@ -3,11 +3,11 @@
 #include "render/integrator.h"
 
 #include <math.h>
-#include <string.h>
 
 #include "mc/constants.h"
 #include "mc/onb.h"
 #include "render/fast/lights4.h"
+#include "render/names.h"
 #include "samplers/hemisphere.h"
 
 _Static_assert(RT_MAX_LIGHTS <= RT_LIGHTS_AT_MAX, "rt_lights_at holds every light of a scene");
@@ -17,18 +17,25 @@ const char *const rt_strategy_names[] = {"uniform", "cosine",     "light", "mixt
 
 rt_path_settings rt_path_settings_default(rt_strategy strategy)
 {
-    rt_path_settings ps = {strategy, 50, false, 3, 1.0, false, 0, 0, false, 0, false, false};
-    return ps;
+    /* neg is left out: zero, the correct renderer. */
+    return (rt_path_settings){
+        .strategy = strategy,
+        .max_depth = 50,
+        .russian_roulette = false,
+        .rr_start = 3,
+        .pdf_objects = false,
+        .bdpt_s = 0,
+        .bdpt_t = 0,
+    };
 }
 
 bool rt_strategy_parse(const char *name, rt_strategy *out)
 {
-    for (int i = 0; rt_strategy_names[i]; i++)
-        if (strcmp(name, rt_strategy_names[i]) == 0) {
-            *out = (rt_strategy)i;
-            return true;
-        }
-    return false;
+    int i = rt_name_index(rt_strategy_names, name);
+    if (i < 0)
+        return false;
+    *out = (rt_strategy)i;
+    return true;
 }
 
 const char *rt_strategy_name(rt_strategy s)
@@ -38,6 +45,7 @@ const char *rt_strategy_name(rt_strategy s)
 
 static bool is_zero(vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
 
+/* BEGIN SNIPPET roulette_rule */
 /* Russian roulette after `depth + 1` segments: continue with probability
  * q = min(0.95, max channel of beta) and divide beta by q, so that the
  * expected contribution of everything after this point is unchanged
@@ -53,6 +61,7 @@ static bool roulette(const rt_path_settings *ps, int depth, vec3 *beta, rt_sampl
     *beta = vec3_scale(*beta, 1.0 / q);
     return true;
 }
+/* END SNIPPET roulette_rule */
 
 /* --- the densities --------------------------------------------------------
  * The light list seen from one hit point: the book's pdf objects (a
@@ -123,22 +132,25 @@ RT_HOT_INLINE vec3 material_generate(const rt_scatter *sr, rt_sampler *sampler)
 
 static double material_value(const rt_scatter *sr, vec3 d) { return rt_cosine_value(sr->normal, d); }
 
-/* The chapter-8 mixture weights: 1/2 lights + 1/2 material. */
+/* The mixture weights of Shirley v1.123 chapter 8 (#ch-mixture): 1/2 lights
+ * + 1/2 material. */
 static const double mixture_weights[2] = {0.5, 0.5};
 
 /* The mixture's density at dir given the light list's density there,
  * summed in pdf_mixture's order (so the same bits as pdf_value of
- * pdf_mixture), with the negative-control scale on the light part. */
+ * pdf_mixture), with the negative-control error on the light part
+ * (1 + 0 is exactly 1, so at zero the product keeps every bit). */
 static double mixture_density(const rt_path_settings *ps, const rt_scatter *sr, vec3 dir,
                               double light_value)
 {
     double sum = 0.0;
-    sum += mixture_weights[0] * (light_value * ps->light_pdf_scale);
+    sum += mixture_weights[0] * (light_value * (1.0 + ps->neg.light_pdf_error));
     sum += mixture_weights[1] * material_value(sr, dir);
     return sum;
 }
 
-/* The chapter-8 mixture: one direction and the mixture density there.
+/* The mixture of Shirley v1.123 chapter 8 (#ch-mixture): one direction and
+ * the mixture density there.
  * The draw is pdf_mixture's: component 0 (the lights) when a uniform is
  * below its weight, else the material, then that component's generate. */
 /* BEGIN SNIPPET mixture_sample */
@@ -332,7 +344,7 @@ static double continued_weight(const rt_scene *s, const rt_path_settings *ps, ve
         return 1.0;
     lights_at lights;
     lights_prepare(&lights, s, ps, from, nee_emitters_only(ps));
-    double pl = lights_value(&lights, dir) * ps->light_pdf_scale;
+    double pl = lights_value(&lights, dir) * (1.0 + ps->neg.light_pdf_error);
     if (ps->strategy == RT_LIGHT)
         return pl > 0.0 ? 0.0 : 1.0;
     return power_weight(p_mat, pl);
@@ -352,7 +364,7 @@ static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt
     lights_at lights;
     lights_prepare(&lights, s, ps, h->p, nee_emitters_only(ps));
     vec3 dir = lights_generate(&lights, sampler);
-    double pl = lights_value(&lights, dir) * ps->light_pdf_scale;
+    double pl = lights_value(&lights, dir) * (1.0 + ps->neg.light_pdf_error);
     double sp = rt_material_scattering_pdf(m, h, dir);
     if (!(sp > 0.0 && pl > 0.0))
         return zero;

@@ -3,18 +3,18 @@
  * Two integrators, five strategies, one quantity: every strategy estimates
  * the same sum over paths of at most max_depth ray segments (a segment is
  * one ray from one surface point to the next hit), so that they must agree
- * image for image (chapter 4 of "Ray Tracing: The Rest of Your Life": two
- * strategies that should agree but do not reveal a bug).
+ * image for image (Shirley, "Ray Tracing: The Rest of Your Life" (v1.123),
+ * chapter 4: two strategies that should agree but do not reveal a bug).
  *
- * The book's integrator (chapters 4-10): at a diffuse hit one direction is
+ * The book's integrator (its chapters 4-10; this book's #ch-cornell): at a diffuse hit one direction is
  * drawn from a density p and the path continues with weight
  * albedo * s(direction) / p(direction), emission being collected where the
  * path lands. Strategies:
- *   RT_UNIFORM   p = 1 / (2 pi) on the hemisphere (chapter 4's experiment)
+ *   RT_UNIFORM   p = 1 / (2 pi) on the hemisphere (v1.123 ch. 4's experiment)
  *   RT_COSINE    p = the material's scattering pdf, cos / pi
- *   RT_MIXTURE   p = 1/2 light list + 1/2 material pdf (chapters 8 and 10)
+ *   RT_MIXTURE   p = 1/2 light list + 1/2 material pdf (v1.123 ch. 8, 10)
  * The second integrator splits direct from indirect light (the lecture
- * slides): at each diffuse hit a shadow ray goes toward a point drawn from
+ * slides "Solving the Rendering Equation"; this book's #ch-nee-mis): at each diffuse hit a shadow ray goes toward a point drawn from
  * the light list, and the path continues by the material pdf:
  *   RT_LIGHT     the shadow ray carries all light the light list can
  *                reach; a continued path that lands on such an emitter
@@ -56,15 +56,39 @@ typedef enum rt_strategy {
 /* True for the strategies that splat (render/bdpt.h). */
 static inline bool rt_strategy_splats(rt_strategy s) { return s == RT_LIGHTTRACE || s == RT_BDPT; }
 
+/* Negative-control hooks: deliberately wrong behaviour, so that a test
+ * can check that a renderer with that bug fails it. Only tests set them.
+ * Zero (what an initialiser that leaves them out gives) means the correct
+ * renderer, and at zero they change no bit of any image. */
+typedef struct rt_negative_controls {
+    /* The light-list density the estimator divides by is multiplied by
+     * 1 + light_pdf_error; the sampling is unchanged, so any value but 0
+     * makes the image wrong (render/integrator.c). */
+    double light_pdf_error;
+    /* render/bdpt.h: splats without the 1 / cos^3 of the camera
+     * importance. */
+    bool splat_drop_cos3;
+    /* render/bdpt.h: strategy mis_double - 1 counted twice in the MIS
+     * weights' sum (0: none). */
+    int mis_double;
+    /* render/bdpt.h: the paths E S* L kept in the weighted sum although
+     * rt_bdpt_seen_sample adds them too. */
+    bool seen_twice;
+    /* render/bdpt.h: the paths E S+ D S+ L kept although the split rays at
+     * D add them too. */
+    bool through_twice;
+    /* render/sampler.h: with sobol, a 1D request does not move on to the
+     * next dimension (read by rt_render_sampler, render/render.h). */
+    bool sampler_reuse_dim;
+} rt_negative_controls;
+
+/* Initialise with designated initialisers (or start from
+ * rt_path_settings_default), so that a new field shifts no other. */
 typedef struct rt_path_settings {
     rt_strategy strategy;
     int max_depth;         /* most ray segments per path (shadow rays aside), >= 0 */
     bool russian_roulette; /* terminate low-throughput paths, unbiasedly */
     int rr_start;          /* roulette begins after this many segments */
-    /* Negative-control hook: the light-list density the estimator divides
-     * by is multiplied by this (1 for a correct renderer); the sampling is
-     * unchanged, so any other value makes the image wrong. */
-    double light_pdf_scale;
     /* Build the light list's pdf objects at every bounce, as the book does
      * (pdf/pdf.h), instead of render/lights.h's cached constants. Both give
      * the same numbers; the objects are the reference, the default is
@@ -74,19 +98,12 @@ typedef struct rt_path_settings {
      * strategy (bdpt_s light vertices, bdpt_t camera vertices),
      * unweighted (render/bdpt.h). */
     int bdpt_s, bdpt_t;
-    /* Negative-control hooks of render/bdpt.h, off (0) in a correct
-     * renderer: splats without the 1 / cos^3 of the camera importance;
-     * strategy mis_double - 1 counted twice in the MIS weights' sum; the
-     * paths E S* L kept in the weighted sum although rt_bdpt_seen_sample
-     * adds them too; the paths E S+ D S+ L kept although the split rays
-     * at D add them too. */
-    bool splat_drop_cos3;
-    int mis_double;
-    bool seen_twice, through_twice;
+    rt_negative_controls neg; /* all zero: the correct renderer */
 } rt_path_settings;
 
 /* Book defaults: the given strategy, max depth 50, no roulette
- * (rr_start 3 if it is switched on), light_pdf_scale 1, fast densities. */
+ * (rr_start 3 if it is switched on), fast densities, every strategy of
+ * bdpt, no negative control. */
 rt_path_settings rt_path_settings_default(rt_strategy strategy);
 
 /* The strategy named "uniform", "cosine", "light", "mixture", "mis",

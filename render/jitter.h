@@ -1,7 +1,7 @@
 /* render/jitter.h - where in a pixel each of its samples looks.
  *
- * Chapter 1's stratification ("jittering") applied to the pixels of the
- * Cornell box: for spp samples, the largest sx x sy <= spp grid of cells
+ * The stratification ("jittering") of this book's #ch-pi applied to the
+ * pixels of the Cornell box: for spp samples, the largest sx x sy <= spp grid of cells
  * (mc/strat.h), each cell holding one uniform point, then spp - sx sy
  * plain uniform points. The cells are visited in a scrambled order (a
  * stride coprime to the cell count), so that any prefix of a pixel's

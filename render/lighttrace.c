@@ -70,8 +70,8 @@ static void progress(const rt_render_job *job, const lane_totals *lanes, int nb,
  * takes the next row of the free buffer with the most rows left, so that
  * the buffers finish together and no thread waits long for another at the
  * end of the pass (with a whole buffer as the unit, two threads sharing
- * eight buffers left one idle for 13% of the time). Returns whether the
- * cancel flag stopped it. */
+ * eight buffers left one of them idle for part of the pass). Returns
+ * whether the cancel flag stopped it. */
 static bool splat_pass(const rt_render_job *job, const rt_bdpt_ctx *ctx, rt_image *img,
                        mc_rng *streams, bool *edges, const rt_jitter *jt, uint64_t k0, uint64_t k1,
                        double *splat, lane_totals *lanes, int nb)

@@ -1,15 +1,16 @@
 /* render/material.h - what happens where a ray meets a surface: emission,
  * and scattering described by a scatter record.
  *
- * Chapter 10 of "Ray Tracing: The Rest of Your Life" ("Cleaning Up pdf
- * Management"): a material either scatters diffusely, handing the integrator
- * the pdf object of its scattering density (chapter 3: the Lambertian
- * scattering pdf is cos(theta) / pi), or specularly, handing it a single
- * ray with the specular flag set (metal and glass, whose delta densities
- * are never evaluated). Emission is the diffuse light of chapter 7, which
- * shines from its front face only. Refraction, total internal reflection,
- * Schlick's approximation and the exact Fresnel equations follow the notes
- * on path-tracing mathematics.
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 10
+ * ("Cleaning Up pdf Management"): a material either scatters diffusely,
+ * handing the integrator the pdf object of its scattering density (its
+ * chapter 3: the Lambertian scattering pdf is cos(theta) / pi), or
+ * specularly, handing it a single ray with the specular flag set (metal and
+ * glass, whose delta densities are never evaluated). Emission is the
+ * diffuse light of its chapter 7, which shines from its front face only.
+ * Refraction, total internal reflection, Schlick's approximation and the
+ * exact Fresnel equations follow the project's source notes on path-tracing
+ * mathematics (this book's #ch-cornell).
  */
 #ifndef RT_MATERIAL_H
 #define RT_MATERIAL_H
@@ -54,7 +55,8 @@ rt_material rt_lambertian(vec3 albedo);
 rt_material rt_metal(vec3 albedo, double fuzz);
 /* Clear dielectric of index ior (> 0) with the chosen reflectance. */
 rt_material rt_dielectric(double ior, rt_fresnel fresnel);
-/* The diffuse light of chapter 7: radiance `emission` from the front face. */
+/* The diffuse light of v1.123's chapter 7: radiance `emission` from the
+ * front face. */
 rt_material rt_diffuse_light(vec3 emission);
 
 /* The scatter record. For a diffuse event the material's scattering

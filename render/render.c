@@ -11,13 +11,15 @@
 
 rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera)
 {
-    rt_render_job job = {0};
-    job.scene = scene;
-    job.camera = camera;
-    job.path = rt_path_settings_default(RT_MIXTURE);
-    job.spp = 100;
-    job.seed = 1;
-    return job;
+    /* The rest zero: all threads, passes of about 16, no progress, no
+     * cancel flag, four paths at a time, the stratified sampler. */
+    return (rt_render_job){
+        .scene = scene,
+        .camera = camera,
+        .path = rt_path_settings_default(RT_MIXTURE),
+        .spp = 100,
+        .seed = 1,
+    };
 }
 
 /* Samples [k0, k1) of every pixel of row y; c0 is the cell of sample k0. */
@@ -99,7 +101,7 @@ static void render_pass(const rt_render_job *job, rt_image *img, mc_rng *streams
 rt_sampler rt_render_sampler(const rt_render_job *job, mc_rng rng, uint64_t pixel)
 {
     rt_sampler s = rt_sampler_pixel(job->sampler, job->seed, job->spp, rng, pixel);
-    s.reuse_dim = job->sampler_reuse_dim;
+    s.reuse_dim = job->path.neg.sampler_reuse_dim;
     return s;
 }
 

@@ -1,8 +1,9 @@
 /* render/render.h - rendering a whole image with OpenMP threads.
  *
- * The image loop of every chapter of "Ray Tracing: The Rest of Your Life",
+ * The image loop of every chapter of Shirley's "Ray Tracing: The Rest of
+ * Your Life" (v1.123),
  * made reproducible and interruptible:
- * - Pixel samples are jittered (chapter 1's stratification) on the grid of
+ * - Pixel samples are jittered (this book's #ch-pi) on the grid of
  *   mc/strat.h: for spp samples, the largest sx x sy <= spp grid of cells,
  *   each cell holding one uniform point, then spp - sx sy plain uniform
  *   points. Every point traced is counted, so sample count and divisor
@@ -71,10 +72,6 @@ typedef struct rt_render_job {
      * reference the tests compare against. */
     bool one_path_at_a_time;
     rt_sampler_kind sampler; /* default stratified; sobol needs spp < 2^32 */
-    /* Negative-control hook (render/sampler.h): with sobol, a 1D request
-     * does not move on to the next dimension. False in a correct
-     * renderer. */
-    bool sampler_reuse_dim;
 } rt_render_job;
 
 typedef struct rt_render_stats {

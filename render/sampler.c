@@ -2,20 +2,20 @@
  * requests. */
 #include "render/sampler.h"
 
-#include <string.h>
+#include <stddef.h>
 
 #include "mc/qmc.h"
+#include "render/names.h"
 
 const char *const rt_sampler_names[] = {"stratified", "independent", "sobol", NULL};
 
 bool rt_sampler_parse(const char *name, rt_sampler_kind *out)
 {
-    for (int i = 0; rt_sampler_names[i]; i++)
-        if (strcmp(name, rt_sampler_names[i]) == 0) {
-            *out = (rt_sampler_kind)i;
-            return true;
-        }
-    return false;
+    int i = rt_name_index(rt_sampler_names, name);
+    if (i < 0)
+        return false;
+    *out = (rt_sampler_kind)i;
+    return true;
 }
 
 const char *rt_sampler_name(rt_sampler_kind kind)

@@ -4,7 +4,7 @@
  * through a sampler: "the next 1D" or "the next 2D" of this sample. Three
  * kinds:
  *   RT_SAMPLER_STRATIFIED  the pixel position jittered over a grid of cells
- *                          (render/jitter.h, chapter 10 "The Cornell Box"),
+ *                          (render/jitter.h, this book's #ch-cornell),
  *                          every other draw from the pixel's PCG32 stream;
  *                          the default
  *   RT_SAMPLER_INDEPENDENT every draw, the pixel position too, from the
@@ -71,7 +71,8 @@ typedef struct rt_sampler {
     bool sobol;   /* draws come from the padded Sobol points */
     /* Negative-control hook: a 1D request leaves the dimension where it
      * was, so that the request after it gets the same point (a dimension
-     * dropped). False in a correct renderer. */
+     * dropped). False in a correct renderer; rt_render_sampler sets it
+     * from the job's path.neg.sampler_reuse_dim (render/integrator.h). */
     bool reuse_dim;
     uint32_t dim; /* sobol: the next dimension of this sample */
     uint32_t k, n; /* sobol: this sample's index and the pixel's sample count */
@@ -113,9 +114,9 @@ static inline void rt_sampler_segment(rt_sampler *s, int depth)
 /* For the draws below and the functions that make them at every path
  * vertex (the camera ray, the cosine direction, the light list's
  * direction): inline even where the compiler's size heuristics would not.
- * The sampler's branch grew them past gcc's limit, and the calls cost the
- * default sampler 3% more instructions in the book render; inlined, it
- * takes 1% fewer than before the samplers (docs/performance.md). */
+ * The sampler's branch grew them past gcc's limit, and the calls then
+ * cost the default sampler instructions in the book render that inlining
+ * saves (docs/performance.md records the counts). */
 #if defined(__GNUC__)
 #define RT_HOT_INLINE static inline __attribute__((always_inline))
 #else

@@ -4,7 +4,8 @@
  * The Cornell box of "Ray Tracing: The Rest of Your Life" (chapters 4-10)
  * is built the book's way: quads, a sphere, boxes made of six quads, and
  * boxes moved by rotate-about-y and translate instances; the lights that
- * the mixture density aims at are a separate list (chapter 10).
+ * the mixture density aims at are a separate list (v1.123's chapter 10;
+ * this book's #ch-cornell).
  *
  * Instances. The book intersects an instance by moving every ray into the
  * child's frame and the hit back out. A rigid motion maps a parallelogram

@@ -2,12 +2,17 @@
 #include "render/scenes.h"
 
 #include <math.h>
-#include <string.h>
 
 #include "mc/constants.h"
+#include "render/names.h"
 
-const char *const rt_scene_names[] = {"book", "book-metal", "lambert", "furnace", "sphere-light",
-                                      NULL};
+/* The scenes of rt_scene_named, each bound to its name here. */
+enum { SCENE_BOOK, SCENE_BOOK_METAL, SCENE_LAMBERT, SCENE_FURNACE, SCENE_SPHERE_LIGHT, SCENE_COUNT };
+
+const char *const rt_scene_names[] = {
+    [SCENE_BOOK] = "book",       [SCENE_BOOK_METAL] = "book-metal",     [SCENE_LAMBERT] = "lambert",
+    [SCENE_FURNACE] = "furnace", [SCENE_SPHERE_LIGHT] = "sphere-light", [SCENE_COUNT] = NULL,
+};
 
 static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
 
@@ -133,15 +138,18 @@ rt_scene *rt_scene_sphere_light(double phi, double r, double h, double half, dou
 
 rt_scene *rt_scene_named(const char *name, rt_camera_params *cam)
 {
-    if (strcmp(name, "book") == 0)
+    switch (rt_name_index(rt_scene_names, name)) {
+    case SCENE_BOOK:
         return cornell(false, false, cam);
-    if (strcmp(name, "book-metal") == 0)
+    case SCENE_BOOK_METAL:
         return cornell(true, false, cam);
-    if (strcmp(name, "lambert") == 0)
+    case SCENE_LAMBERT:
         return cornell(false, true, cam);
-    if (strcmp(name, "furnace") == 0)
+    case SCENE_FURNACE:
         return rt_scene_furnace(RT_FURNACE_EMISSION, RT_FURNACE_RHO, cam);
-    if (strcmp(name, "sphere-light") == 0)
+    case SCENE_SPHERE_LIGHT:
         return rt_scene_sphere_light(4e5, 20.0, 100.0, 400.0, 0.8, cam);
-    return NULL;
+    default:
+        return NULL;
+    }
 }

@@ -1,13 +1,14 @@
 /* render/scenes.h - the scenes of the Cornell box program and its tests.
  *
- * "book" is the final scene of "Ray Tracing: The Rest of Your Life"
- * (chapter 10), with the values of the book's published code: the room of
+ * "book" is the final scene of Shirley's "Ray Tracing: The Rest of Your
+ * Life" (v1.123, chapter 10), with the values of cornell_box() in main.cc
+ * of release v1.123.0: the room of
  * five quads, the light (213, 554, 227) + (130, 0, 0) + (0, 0, 105) of
  * radiance 15 facing down, a white box 165 x 330 x 165 turned 15 degrees
  * and moved to (265, 0, 295), a glass sphere (index 1.5) of radius 90 at
  * (190, 90, 190); the light list holds the light quad and the sphere.
  * "book-metal" makes the tall box aluminium (metal (0.8, 0.85, 0.88),
- * fuzz 0) as chapter 10's text describes. "lambert" is chapter 4's room
+ * fuzz 0) as v1.123's chapter 10 describes. "lambert" is v1.123's chapter 4 room
  * with the classic two white boxes, all Lambertian; its light list is the
  * light quad. "furnace" and "sphere-light" are test scenes with analytic
  * answers (see their builders below).

@@ -1,8 +1,9 @@
 /* render/shapes.h - the two primitives of the Cornell box: parallelograms
  * ("quads": corner Q, edges u and v) and spheres.
  *
- * The walls, the light and the boxes of chapters 4-10 of "Ray Tracing: The
- * Rest of Your Life" are quads; the glass sphere of chapter 10 is a sphere.
+ * The walls, the light and the boxes of chapters 4-10 of Shirley's "Ray
+ * Tracing: The Rest of Your Life" (v1.123) are quads; the glass sphere of
+ * its chapter 10 is a sphere.
  * Intersection is split in two so that the BVH can stay cheap: the
  * *_hit_distance functions only find the distance (static inline, called
  * for every candidate), and rt_prim_hit_record fills in the point and

@@ -611,5 +611,6 @@ int main(void)
         cmocka_unit_test(test_counts),
         cmocka_unit_test(test_invalid_calls),
     };
+    mc_test_select();
     return cmocka_run_group_tests(tests, negctl_group_setup, negctl_group_teardown);
 }

@@ -153,7 +153,7 @@ static void test_mis_weights_sum_to_one(void **state)
     rt_scene *s = rt_scene_named("lambert", &cp);
     rt_camera cam = rt_camera_make(cp, W, W);
     rt_path_settings ps = rt_path_settings_default(RT_BDPT), bad = ps;
-    bad.mis_double = 2;
+    bad.neg.mis_double = 2;
     rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam), cb = rt_bdpt_ctx_make(s, &bad, &cam);
     rt_material white = rt_lambertian(vec3_make(0.73, 0.73, 0.73));
     rt_material glass = rt_dielectric(1.5, RT_FRESNEL_SCHLICK);
@@ -263,8 +263,8 @@ static void test_agree_with_mixture(void **state)
         }
         if (i == 0) {
             rt_path_settings lt = rt_path_settings_default(RT_LIGHTTRACE), mis = rt_path_settings_default(RT_BDPT);
-            lt.splat_drop_cos3 = true;
-            mis.mis_double = 2;
+            lt.neg.splat_drop_cos3 = true;
+            mis.neg.mis_double = 2;
             regions bad1 = batched(s, cp, lt, 64, seed + 90u), bad2 = batched(s, cp, mis, 64, seed + 95u);
             expect_caught(nc, "light tracing without the camera importance's 1/cos^3", &bad1, &ref, thr);
             expect_caught(nc, "bdpt counting next-event estimation twice", &bad2, &ref, thr);
@@ -272,8 +272,8 @@ static void test_agree_with_mixture(void **state)
         if (i == 1) {
             rt_path_settings rr = rt_path_settings_default(RT_BDPT), seen = rr, through = rr;
             rr.russian_roulette = true;
-            seen.seen_twice = true;
-            through.through_twice = true;
+            seen.neg.seen_twice = true;
+            through.neg.through_twice = true;
             regions with_rr = batched(s, cp, rr, 64, seed + 160u);
             expect_agree("book: bdpt with Russian roulette", &with_rr, &ref, thr, seed);
             /* The floor under the sphere seen through it, close up. */

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "render/names.h"
 #include "render/render.h"
 #include "render/scenes.h"
 
@@ -294,6 +295,54 @@ static void test_gamma_known_values(void **state)
     assert_int_equal(rt_format_from_path("dir.png/x"), RT_FORMAT_UNKNOWN);
 }
 
+/* rt_name_index and the parsers built on it: a name is found only when
+ * it matches exactly; every name of every table parses to its own index
+ * (and prints back); a failed parse leaves *out alone. */
+static void test_names_parse_round_trip(void **state)
+{
+    (void)state;
+    const char *const t[] = {"alpha", "beta", "beta2", NULL};
+    assert_int_equal(rt_name_index(t, "alpha"), 0);
+    assert_int_equal(rt_name_index(t, "beta2"), 2);
+    assert_int_equal(rt_name_index(t, "bet"), -1);
+    assert_int_equal(rt_name_index(t, "beta "), -1);
+    assert_int_equal(rt_name_index(t, "Beta"), -1);
+    assert_int_equal(rt_name_index(t, ""), -1);
+    assert_int_equal(rt_name_index(t, NULL), -1);
+    int n = 0;
+    for (int i = 0; rt_strategy_names[i]; i++, n++) {
+        rt_strategy st = RT_MIS;
+        assert_true(rt_strategy_parse(rt_strategy_names[i], &st));
+        assert_int_equal(st, i);
+        assert_string_equal(rt_strategy_name(st), rt_strategy_names[i]);
+    }
+    assert_int_equal(n, RT_BDPT + 1);
+    rt_strategy st = RT_MIS;
+    assert_false(rt_strategy_parse("bdpt:1,1", &st)); /* rt_bdpt_strategy_parse's */
+    assert_int_equal(st, RT_MIS);
+    n = 0;
+    for (int i = 0; rt_sampler_names[i]; i++, n++) {
+        rt_sampler_kind k = RT_SAMPLER_SOBOL;
+        assert_true(rt_sampler_parse(rt_sampler_names[i], &k));
+        assert_int_equal(k, i);
+        assert_string_equal(rt_sampler_name(k), rt_sampler_names[i]);
+    }
+    assert_int_equal(n, RT_SAMPLER_SOBOL + 1);
+    n = 0;
+    for (int i = 0; rt_gamma_names[i]; i++, n++) {
+        rt_gamma g = RT_GAMMA_SRGB;
+        assert_true(rt_gamma_parse(rt_gamma_names[i], &g));
+        assert_int_equal(g, i);
+    }
+    assert_int_equal(n, RT_GAMMA_SRGB + 1);
+    for (int i = 0; rt_scene_names[i]; i++) {
+        rt_camera_params cp;
+        rt_scene *s = rt_scene_named(rt_scene_names[i], &cp);
+        assert_non_null(s);
+        rt_scene_destroy(s);
+    }
+}
+
 /* A 3 x 2 image with known pixels. */
 static rt_image *known_image(void)
 {
@@ -468,6 +517,7 @@ int main(void)
         cmocka_unit_test(test_pixel_samples_stratified_and_counted),
         cmocka_unit_test(test_render_cancel_keeps_exact_count),
         cmocka_unit_test(test_gamma_known_values),
+        cmocka_unit_test(test_names_parse_round_trip),
         cmocka_unit_test(test_write_pfm),
         cmocka_unit_test(test_write_ppm),
         cmocka_unit_test(test_write_png),

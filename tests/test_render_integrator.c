@@ -147,7 +147,7 @@ static void test_sphere_light_irradiance(void **state)
                rt_strategy_name((rt_strategy)st), zs[0], zs[1], zs[2], zs[3], zs[4]);
     }
     rt_path_settings bad = rt_path_settings_default(RT_MIXTURE);
-    bad.light_pdf_scale = 2.0;
+    bad.neg.light_pdf_error = 1.0; /* the light density x 2 */
     mc_estimate e = radiance_at(s, &bad, 0.0, 0.0, 40000, seed + 99u);
     double z = mc_z_score(e.value, sphere_light_expected(phi, h, rho, 0.0, 0.0), e.std_error);
     printf("negative control (mixture, light pdf x 2) below the light: z = %.1f\n", z);

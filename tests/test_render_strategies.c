@@ -23,7 +23,7 @@ typedef struct regions {
 } regions;
 
 /* Region means of a rendering with the sampler `sampler` (reuse_dim: the
- * negative-control hook of rt_render_job). */
+ * negative-control hook ps.neg.sampler_reuse_dim). */
 static regions render_regions_with(const rt_scene *s, rt_camera_params cp, rt_path_settings ps,
                                    uint64_t spp, uint64_t seed, rt_sampler_kind sampler,
                                    bool reuse_dim)
@@ -31,8 +31,8 @@ static regions render_regions_with(const rt_scene *s, rt_camera_params cp, rt_pa
     rt_image *img = rt_image_create(W, W);
     rt_render_job job = rt_render_job_default(s, rt_camera_make(cp, W, W));
     job.sampler = sampler;
-    job.sampler_reuse_dim = reuse_dim;
     job.path = ps;
+    job.path.neg.sampler_reuse_dim = reuse_dim;
     job.spp = spp;
     job.seed = seed;
     job.threads = 2;
@@ -114,7 +114,7 @@ static void test_strategies_agree_on_lambert(void **state)
         }
         if (d == 1) {
             ps.strategy = RT_MIXTURE;
-            ps.light_pdf_scale = 0.5;
+            ps.neg.light_pdf_error = -0.5; /* the light density x 0.5 */
             regions bad = render_regions(s, cp, ps, 256, seed + 20u);
             int k = 0;
             double z = max_z(&bad, &ref, &k);

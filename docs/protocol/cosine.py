@@ -8,6 +8,7 @@ import math
 import sys
 
 
+# BEGIN SNIPPET own_py_warp
 def sample(u1, u2):  # Malley: a uniform point of the disc, lifted to the hemisphere
     r, phi = math.sqrt(u1), 2.0 * math.pi * u2
     return r * math.cos(phi), r * math.sin(phi), math.sqrt(max(0.0, 1.0 - u1))
@@ -19,8 +20,10 @@ def pdf(x, y, z):  # per unit solid angle
 
 def invert(x, y, z):
     return x * x + y * y, (math.atan2(y, x) / (2.0 * math.pi)) % 1.0
+# END SNIPPET own_py_warp
 
 
+# BEGIN SNIPPET own_py_protocol
 def main():
     out = sys.stdout
     for line in sys.stdin:
@@ -44,6 +47,7 @@ def main():
             return 2
         out.flush()  # mcbox-check waits for the whole batch: never leave it in a buffer
     return 0
+# END SNIPPET own_py_protocol
 
 
 if __name__ == "__main__":

@@ -93,3 +93,16 @@ const char *mc_test_build_dir(void)
     const char *b = getenv("MC_BUILD");
     return b && *b ? b : "build";
 }
+
+const char *mc_test_source_dir(void)
+{
+    const char *s = getenv("MC_SOURCE");
+    return s && *s ? s : ".";
+}
+
+void mc_test_select(void)
+{
+    const char *only = getenv("MC_TEST_ONLY");
+    if (only && *only)
+        cmocka_set_test_filter(only);
+}

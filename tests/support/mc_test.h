@@ -51,4 +51,12 @@ size_t mc_test_read_text(const char *path, char *buf, size_t size);
 /* The directory holding the build under test ($MC_BUILD, default "build"). */
 const char *mc_test_build_dir(void);
 
+/* The source tree ($MC_SOURCE, default the current directory, "."). */
+const char *mc_test_source_dir(void);
+
+/* With MC_TEST_ONLY=PATTERN in the environment, only the tests whose names
+ * match PATTERN (cmocka's wildcards * and ?) run: the book shows one test
+ * of a long program. Call before cmocka_run_group_tests. */
+void mc_test_select(void);
+
 #endif /* MC_TEST_H */

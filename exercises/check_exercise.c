@@ -1,0 +1,386 @@
+/* exercises/check_exercise.c - main() of every exercise: runs its judge,
+ * prints each check's figures and one verdict.
+ *
+ * Usage: EXERCISE [--seed S] [--samples N] [--plot DIR] [--table] [--build B]
+ *   --seed S     replace every check's stated seed by a hash of (S, seed)
+ *   --samples N  replace every stated sample count by N
+ *   --plot DIR   write DIR/NAME-K.dat and DIR/NAME-K.gp (a gnuplot script
+ *                drawing NAME-K.png) for the K-th sampler check
+ *   --table      print one line: VERDICT, build, key figure and the number
+ *                of statistical tests, separated by tabs
+ *   --build B    judge the build B (ref, slip1, ...) linked into NAME-all
+ *                instead of the reader's (see find_build)
+ * Exit status 0 pass, 1 fail, 2 bad usage or a check that could not run.
+ */
+#include "exercises/check_exercise.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mc/chi2.h"
+
+struct ex_judge {
+    bool has_seed, has_samples, table;
+    uint64_t seed, samples;
+    const char *plot_dir;
+    const ex_exercise *ex; /* the build being judged */
+    int checks, failed, errors, stat_tests, plots;
+    char key[200];
+    bool key_is_failure;
+};
+
+/* The per-test level of the table (Sidak over EX_FAMILY tests). */
+static double level(void)
+{
+    return mc_sidak_alpha(EX_ALPHA, EX_FAMILY);
+}
+
+uint64_t ex_seed(const ex_judge *j, uint64_t base)
+{
+    if (!j->has_seed)
+        return base;
+    /* MurmurHash3's 64-bit finaliser of the pair: nearby S give unrelated
+     * seeds. */
+    uint64_t h = j->seed * UINT64_C(0x9e3779b97f4a7c15) ^ base;
+    h ^= h >> 33, h *= UINT64_C(0xff51afd7ed558ccd);
+    h ^= h >> 33, h *= UINT64_C(0xc4ceb9fe1a85ec53);
+    return h ^ (h >> 33);
+}
+
+uint64_t ex_samples(const ex_judge *j, uint64_t n)
+{
+    return j->has_samples ? j->samples : n;
+}
+
+/* Records one check's outcome and prints it (unless --table): `key` is the
+ * short figure the table shows, `figure` the full line. The table's key
+ * figure is that of the first failing check, else of the first check. */
+static void report(ex_judge *j, const char *what, int status, const char *key, const char *figure,
+                   const char *why)
+{
+    j->checks++;
+    if (status != 0)
+        j->failed++;
+    if (status == 2)
+        j->errors++;
+    if ((status != 0 && !j->key_is_failure) || j->checks == 1) {
+        snprintf(j->key, sizeof j->key, "%.60s: %.130s", what, key); /* fits: 194 < 200 */
+        j->key_is_failure = status != 0;
+    }
+    if (j->table)
+        return;
+    printf("  [%s] %s\n         %s\n", status == 0 ? "pass" : status == 1 ? "FAIL" : "ERROR", what,
+           figure);
+    if (why && why[0])
+        printf("         why: %s\n", why);
+}
+
+/* --- the picture ----------------------------------------------------------- */
+
+/* a, b, c and d one after the other as a gnuplot single-quoted string,
+ * where a quote is written twice. */
+static void gp_quoted(FILE *g, const char *a, const char *b, const char *c, const char *d)
+{
+    const char *parts[4] = {a, b, c, d};
+    fputc('\'', g);
+    for (int k = 0; k < 4; k++)
+        for (const char *p = parts[k]; *p; p++) {
+            if (*p == '\'')
+                fputc('\'', g);
+            fputc(*p, g);
+        }
+    fputc('\'', g);
+}
+
+/* DIR/NAME-K.dat: per chart cell its centre, observed and expected counts
+ * and the standardized residual; DIR/NAME-K.gp draws the three maps (or,
+ * in 1D, the two histograms and the residuals) into DIR/NAME-K.png. */
+static void write_picture(ex_judge *j, const char *what, const mcbox_check_table *t,
+                          const mcbox_check_result *r)
+{
+    char dat[512], gp[512], base[256];
+    snprintf(base, sizeof base, "%s-%d", j->ex->name, ++j->plots);
+    snprintf(dat, sizeof dat, "%s/%s.dat", j->plot_dir, base);
+    snprintf(gp, sizeof gp, "%s/%s.gp", j->plot_dir, base);
+    FILE *f = fopen(dat, "w"), *g = f ? fopen(gp, "w") : NULL;
+    if (!f || !g) {
+        fprintf(stderr, "%s: cannot write %s: %s\n", j->ex->name, f ? gp : dat, strerror(errno));
+        if (f)
+            fclose(f);
+        return;
+    }
+    double dx = (t->hi[0] - t->lo[0]) / t->nx;
+    double dy = t->dims == 2 ? (t->hi[1] - t->lo[1]) / t->ny : 0.0;
+    fprintf(f, "# %s: %s\n# x%s observed expected (observed-expected)/sqrt(expected)\n",
+            j->ex->name, what, t->dims == 2 ? " y" : "");
+    for (int i = 0; i < t->nx; i++) {
+        for (int k = 0; k < t->ny; k++) {
+            size_t c = (size_t)i * (size_t)t->ny + (size_t)k;
+            double o = t->observed[c], e = t->expected[c];
+            double res = e > 0.0 ? (o - e) / sqrt(e) : (o > 0.0 ? 10.0 : 0.0);
+            if (t->dims == 2)
+                fprintf(f, "%.9g %.9g %.0f %.6g %.4g\n", t->lo[0] + (i + 0.5) * dx,
+                        t->lo[1] + (k + 0.5) * dy, o, e, res);
+            else
+                fprintf(f, "%.9g %.0f %.6g %.4g\n", t->lo[0] + (i + 0.5) * dx, o, e, res);
+        }
+        if (t->dims == 2)
+            fputc('\n', f);
+    }
+    fclose(f);
+    char title[400];
+    snprintf(title, sizeof title, "%s (%s): %s; chi-square %.5g, %d dof, p = %.3g", j->ex->name,
+             j->ex->variant, what, r->statistic, r->dof, r->pvalue);
+    fprintf(g, "set terminal pngcairo size %d,460 font 'DejaVu Sans,10'\nset output ",
+            t->dims == 2 ? 1500 : 1000);
+    gp_quoted(g, j->plot_dir, "/", base, ".png");
+    fprintf(g, "\nset multiplot layout 1,%d title ", t->dims == 2 ? 3 : 2);
+    gp_quoted(g, title, "", "", "");
+    fprintf(g, "\nset xrange [%.9g:%.9g]\nset xlabel ", t->lo[0], t->hi[0]);
+    gp_quoted(g, t->xlabel, "", "", "");
+    if (t->dims == 2) {
+        fprintf(g, "\nset yrange [%.9g:%.9g]\nset ylabel ", t->lo[1], t->hi[1]);
+        gp_quoted(g, t->ylabel, "", "", "");
+        fputs("\nset palette rgb 33,13,10\nset title 'observed'\nplot ", g);
+        gp_quoted(g, dat, "", "", "");
+        fputs(" using 1:2:3 with image notitle\nset title 'expected'\nplot ", g);
+        gp_quoted(g, dat, "", "", "");
+        fputs(" using 1:2:4 with image notitle\nset title '(obs - exp) / sqrt(exp)'\n"
+              "set cbrange [-4:4]\nset palette defined (-4 'blue', 0 'white', 4 'red')\nplot ",
+              g);
+        gp_quoted(g, dat, "", "", "");
+        fputs(" using 1:2:5 with image notitle\n", g);
+    } else {
+        fputs("\nset ylabel 'samples per cell'\nset title 'observed and expected'\nplot ", g);
+        gp_quoted(g, dat, "", "", "");
+        fputs(" using 1:2 with steps title 'observed', '' using 1:3 with steps title 'expected'\n"
+              "set title '(obs - exp) / sqrt(exp)'\nset ylabel 'z'\nplot ",
+              g);
+        gp_quoted(g, dat, "", "", "");
+        fputs(" using 1:4 with impulses notitle\n", g);
+    }
+    fputs("unset multiplot\n", g);
+    fclose(g);
+    if (!j->table)
+        printf("         picture: gnuplot %s (writes %s/%s.png)\n", gp, j->plot_dir, base);
+}
+
+/* --- the checks ------------------------------------------------------------ */
+
+/* The short figure of a sampler check, in the order the check API judges:
+ * points that are not points, then the density, then the statistics. */
+static void sampler_key(const mcbox_check_result *r, char *buf, size_t size)
+{
+    if (r->nonfinite)
+        snprintf(buf, size, "%" PRIu64 " non-finite samples", r->nonfinite);
+    else if (r->outside)
+        snprintf(buf, size, "%" PRIu64 " samples outside", r->outside);
+    else if (r->bad_pdf)
+        snprintf(buf, size, "%" PRIu64 " bad pdf values", r->bad_pdf);
+    else if (!(fabs(r->pdf_integral - 1.0) <= 1e-6))
+        snprintf(buf, size, "pdf integrates to %.6g", r->pdf_integral);
+    else if (!(r->pdf_mismatch <= 1e-6))
+        snprintf(buf, size, "reported pdf off by %.3g", r->pdf_mismatch);
+    else if (!isnan(r->invert_error) && !(r->invert_error <= 1e-6))
+        snprintf(buf, size, "round trip off by %.3g", r->invert_error);
+    else
+        snprintf(buf, size, "chi2 %.5g/%d dof, p = %.3g", r->statistic, r->dof, r->pvalue);
+}
+
+void ex_check_sampler(ex_judge *j, const char *what, const mcbox_sampler *s, uint64_t seed,
+                      uint64_t samples)
+{
+    mcbox_check_options o = mcbox_check_defaults();
+    o.samples = ex_samples(j, samples);
+    o.seed = ex_seed(j, seed);
+    o.alpha = EX_ALPHA;
+    o.tests = EX_FAMILY;
+    mcbox_check_result r;
+    mcbox_check_table t;
+    int rc = mcbox_check_run(s, &o, &r, j->plot_dir ? &t : NULL);
+    j->stat_tests++;
+    char key[120], fig[400], inv[40] = "no inverse";
+    sampler_key(&r, key, sizeof key);
+    if (!isnan(r.invert_error))
+        snprintf(inv, sizeof inv, "round trip %.2g", r.invert_error);
+    snprintf(fig, sizeof fig,
+             "seed %" PRIu64 ", %" PRIu64 " samples, chi-square %.6g with %d dof, p = %.4g "
+             "(level %.2g); integral %.9f; %s; outside %" PRIu64,
+             o.seed, o.samples, r.statistic, r.dof, r.pvalue, r.level, r.pdf_integral, inv,
+             r.outside);
+    report(j, what, rc != 0 ? 2 : r.pass ? 0 : 1, rc != 0 ? "check could not run" : key, fig,
+           r.message);
+    if (rc == 0 && j->plot_dir) {
+        write_picture(j, what, &t, &r);
+        mcbox_check_table_free(&t);
+    }
+}
+
+void ex_check_estimate(ex_judge *j, const char *what, mc_estimate e, double exact, uint64_t seed)
+{
+    j->stat_tests++;
+    double z = mc_z_score(e.value, exact, e.std_error);
+    double p = mc_z_pvalue(z);
+    bool finite = isfinite(e.value) && isfinite(e.std_error) && e.std_error >= 0.0;
+    bool ok = finite && p >= level();
+    char key[120], fig[400];
+    snprintf(key, sizeof key, "z = %.3g", z);
+    snprintf(fig, sizeof fig,
+             "seed %" PRIu64 ", %" PRIu64 " samples: %.9g +- %.3g against %.9g, z = %.3g, "
+             "p = %.4g (level %.2g)",
+             seed, e.n, e.value, e.std_error, exact, z, p, level());
+    report(j, what, ok ? 0 : 1, key, fig,
+           ok ? NULL : !finite ? "the estimate or its error bar is not a finite number"
+                               : "the estimate is further from the exact value than its error "
+                                 "bar allows");
+}
+
+void ex_check_coverage(ex_judge *j, const char *what, uint64_t covered, uint64_t runs,
+                       double nominal, uint64_t seed)
+{
+    j->stat_tests++;
+    double mean = (double)runs * nominal, sd = sqrt(mean * (1.0 - nominal));
+    double z = ((double)covered - mean) / sd, p = mc_z_pvalue(z);
+    bool ok = p >= level();
+    char key[120], fig[400];
+    snprintf(key, sizeof key, "covered %.3f, z = %.3g", (double)covered / (double)runs, z);
+    snprintf(fig, sizeof fig,
+             "seeds %" PRIu64 "+i: %" PRIu64 " of %" PRIu64 " error bars (%.4f) hold the exact "
+             "value, nominal %.4f; z = %.3g, p = %.4g (level %.2g)",
+             seed, covered, runs, (double)covered / (double)runs, nominal, z, p, level());
+    report(j, what, ok ? 0 : 1, key, fig,
+           ok ? NULL : z > 0 ? "the error bar is too wide" : "the error bar is too narrow");
+}
+
+void ex_check_z_family(ex_judge *j, const char *what, double sum_sq, int k, uint64_t seed)
+{
+    j->stat_tests++;
+    double p = isfinite(sum_sq) ? mc_chi2_pvalue(sum_sq, k) : 0.0;
+    bool ok = p >= level();
+    char key[120], fig[400];
+    snprintf(key, sizeof key, "chi2 %.5g/%d, p = %.3g", sum_sq, k, p);
+    snprintf(fig, sizeof fig,
+             "seed %" PRIu64 ": sum of %d squared z-scores %.6g, p = %.4g (level %.2g)", seed, k,
+             sum_sq, p, level());
+    report(j, what, ok ? 0 : 1, key, fig,
+           ok ? NULL : "some regions differ from their exact value beyond their error bars");
+}
+
+void ex_check_exact(ex_judge *j, const char *what, bool ok, const char *figure, ...)
+{
+    char fig[400];
+    va_list ap;
+    va_start(ap, figure);
+    vsnprintf(fig, sizeof fig, figure, ap);
+    va_end(ap);
+    report(j, what, ok ? 0 : 1, fig, fig, NULL);
+}
+
+/* --- main ------------------------------------------------------------------ */
+
+/* The fixtures' builds. `make exercises` compiles the reference and each
+ * slip with ex_this renamed (-Dex_this=ex_build_ref, ex_build_slipK) and
+ * links them beside the reader's build into one program per exercise,
+ * NAME-all, which --build selects from: one link instead of one per
+ * build. Weak, so that the reader's program, which has none of them,
+ * links all the same (an absent one is a null address). */
+#define EX_MAX_SLIPS 8
+#define WEAK __attribute__((weak))
+extern const ex_exercise ex_build_ref WEAK, ex_build_slip1 WEAK, ex_build_slip2 WEAK,
+    ex_build_slip3 WEAK, ex_build_slip4 WEAK, ex_build_slip5 WEAK, ex_build_slip6 WEAK,
+    ex_build_slip7 WEAK, ex_build_slip8 WEAK;
+
+/* The build called `name` ("ref", "slip1" ...), or NULL when it is not in
+ * this program. */
+static const ex_exercise *find_build(const char *name)
+{
+    const ex_exercise *slips[EX_MAX_SLIPS] = {&ex_build_slip1, &ex_build_slip2, &ex_build_slip3,
+                                              &ex_build_slip4, &ex_build_slip5, &ex_build_slip6,
+                                              &ex_build_slip7, &ex_build_slip8};
+    if (strcmp(name, "ref") == 0)
+        return &ex_build_ref;
+    if (strncmp(name, "slip", 4) == 0 && name[4] >= '1' && name[4] <= '0' + EX_MAX_SLIPS &&
+        name[5] == '\0')
+        return slips[name[4] - '1'];
+    return NULL;
+}
+
+static int usage(const char *msg)
+{
+    if (msg)
+        fprintf(stderr, "%s: %s\n", ex_this.name, msg);
+    else
+        printf("usage: %s [--seed S] [--samples N] [--plot DIR] [--table] [--build B]\n"
+               "The exercise '%s' (chapter %s): runs its checks on your code, prints\n"
+               "their figures and a verdict. Exit status 0 pass, 1 fail, 2 error.\n"
+               "--build ref|slipK judges the reference or slip K instead (NAME-all only).\n",
+               ex_this.name, ex_this.name, ex_this.chapter);
+    return msg ? 2 : 0;
+}
+
+static bool parse_u64(const char *s, uint64_t *out)
+{
+    char *end;
+    errno = 0;
+    double v = s && *s != '-' ? strtod(s, &end) : -1.0; /* accepts 1e6 */
+    if (!s || errno || *end || !(v >= 1.0 && v <= 1.8e19) || v != floor(v))
+        return false;
+    *out = (uint64_t)v;
+    return true;
+}
+
+int main(int argc, char **argv)
+{
+    ex_judge j;
+    memset(&j, 0, sizeof j);
+    j.ex = &ex_this;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--help") == 0)
+            return usage(NULL);
+        if (strcmp(a, "--version") == 0) {
+            printf("%s (mcbox %s)\n", ex_this.name, mcbox_version());
+            return 0;
+        }
+        if (strcmp(a, "--table") == 0) {
+            j.table = true;
+        } else if (strcmp(a, "--seed") == 0) {
+            if (!parse_u64(v, &j.seed))
+                return usage("--seed needs a whole number >= 1");
+            j.has_seed = true, i++;
+        } else if (strcmp(a, "--samples") == 0) {
+            if (!parse_u64(v, &j.samples))
+                return usage("--samples needs a whole number >= 1");
+            j.has_samples = true, i++;
+        } else if (strcmp(a, "--plot") == 0) {
+            if (!v)
+                return usage("--plot needs a directory");
+            j.plot_dir = v, i++;
+        } else if (strcmp(a, "--build") == 0) {
+            j.ex = v ? find_build(v) : NULL;
+            if (!j.ex)
+                return usage("--build: no such build in this program (ref, slip1 ...)");
+            i++;
+        } else {
+            char msg[160];
+            snprintf(msg, sizeof msg, "unknown option '%s' (--help lists them)", a);
+            return usage(msg);
+        }
+    }
+    if (!j.table)
+        printf("exercise %s (chapter %s), build: %s\n", j.ex->name, j.ex->chapter, j.ex->variant);
+    j.ex->judge(&j);
+    const char *verdict = j.errors ? "ERROR" : j.failed ? "FAIL" : "PASS";
+    if (j.table)
+        printf("%s\t%s\t%s\t%d\n", verdict, j.ex->variant, j.key, j.stat_tests);
+    else
+        printf("verdict: %s (%d of %d checks failed; %d statistical tests, each at level %.2g: "
+               "false-alarm rate %.2g over the %d of the whole table)\n",
+               verdict, j.failed, j.checks, j.stat_tests, level(), EX_ALPHA, EX_FAMILY);
+    return j.errors ? 2 : j.failed ? 1 : 0;
+}

@@ -1,0 +1,85 @@
+/* exercises/cosine.c - chapters 4 and 5, "Light scattering and importance
+ * sampling materials" (#ch-scattering): the cosine-weighted hemisphere.
+ *
+ * WRITE  sample(u1, u2): a unit direction on the hemisphere z >= 0 whose
+ *        density is proportional to cos theta = z, from two uniforms in
+ *        [0, 1) (phi = 2 pi u1; u2 for the polar angle);
+ *        pdf(w): its density PER UNIT SOLID ANGLE (0 below the horizon);
+ *        invert(w, u): the (u1, u2) that sample() maps to w.
+ * HINT   The density is c cos theta with c fixed by integrating over the
+ *        hemisphere: the integral of cos theta d omega is pi. The CDF of
+ *        the polar angle is 1 - cos^2 theta = sin^2 theta, so
+ *        cos theta = sqrt(1 - u2) (a uniform point of the disc, lifted).
+ *        In the inverse, 1 - z^2 is x^2 + y^2, which stays accurate near
+ *        the pole.
+ * JUDGED by the public check (check/check.h) on MCBOX_HEMISPHERE: 10^6
+ *        samples from seed 3301 in 50 x 100 cells of (cos theta, phi),
+ *        Pearson's chi-square against pdf integrated over each cell; the
+ *        integral of pdf within 1e-6 of 1; the round trip
+ *        |invert(sample(u)) - u| <= 1e-6; every sample a unit vector.
+ *
+ * Run:   make exercise NAME=cosine
+ */
+#include <math.h>
+
+#include "exercises/check_exercise.h"
+
+#ifndef EX_FIXTURE
+/* ===== YOUR CODE BEGINS ================================================ */
+/* BEGIN SNIPPET your_code */
+
+/* A cosine-weighted direction on the hemisphere about +z. */
+static vec3 sample(double u1, double u2)
+{
+    (void)u1, (void)u2;
+    return vec3_make(0.0, 0.0, 1.0); /* TODO */
+}
+
+/* The density of sample() per unit solid angle. */
+static double pdf(vec3 w)
+{
+    (void)w;
+    return 0.0; /* TODO */
+}
+
+/* The uniforms (u[0], u[1]) that sample() maps to the direction w. */
+static void invert(vec3 w, double u[2])
+{
+    (void)w;
+    u[0] = u[1] = 0.0; /* TODO */
+}
+
+/* END SNIPPET your_code */
+/* ===== YOUR CODE ENDS ================================================== */
+#else
+#include "exercises/fixtures/cosine.h" /* the suite's reference and slips */
+#endif
+
+/* --- the judge: nothing to change below ----------------------------------- */
+
+static void check_sample(const double *u, mcbox_sample *out, void *ctx)
+{
+    (void)ctx;
+    ex_put3(out->x, sample(u[0], u[1]));
+}
+
+static double check_pdf(const double *x, void *ctx)
+{
+    (void)ctx;
+    return pdf(ex_vec3(x));
+}
+
+static void check_invert(const double *x, double *u, void *ctx)
+{
+    (void)ctx;
+    invert(ex_vec3(x), u);
+}
+
+static void judge(ex_judge *j)
+{
+    mcbox_sampler s = mcbox_sampler_init(MCBOX_HEMISPHERE);
+    s.sample = check_sample, s.pdf = check_pdf, s.invert = check_invert;
+    ex_check_sampler(j, "public check", &s, 3301, 1000000);
+}
+
+const ex_exercise ex_this = {"cosine", "4-5 (#ch-scattering)", EX_VARIANT, judge};

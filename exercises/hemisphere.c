@@ -1,0 +1,84 @@
+/* exercises/hemisphere.c - chapter 5, "Generating random directions"
+ * (#ch-directions): the uniform hemisphere, with its inverse.
+ *
+ * WRITE  sample(u1, u2): a unit direction distributed uniformly over the
+ *        hemisphere z >= 0, from two uniforms in [0, 1): u1 drives the
+ *        azimuth phi = 2 pi u1, u2 the height;
+ *        pdf(w): its density PER UNIT SOLID ANGLE (0 below the horizon);
+ *        invert(w, u): the (u1, u2) that sample() maps to w.
+ * HINT   As on the sphere, the height z = cos theta is uniform (hat-box
+ *        theorem), now on [0, 1]: z = 1 - u2 keeps z > 0. The hemisphere
+ *        has solid angle 2 pi. For the inverse, atan2(y, x) gives phi in
+ *        (-pi, pi]: bring it to [0, 2 pi) before dividing by 2 pi.
+ * JUDGED by the public check (check/check.h) on MCBOX_HEMISPHERE: 10^6
+ *        samples from seed 3201 in 50 x 100 cells of (cos theta, phi),
+ *        Pearson's chi-square against pdf integrated over each cell; the
+ *        integral of pdf within 1e-6 of 1; |invert(sample(u)) - u| <= 1e-6
+ *        for every sample (the round trip); every sample a unit vector with
+ *        z >= 0.
+ *
+ * Run:   make exercise NAME=hemisphere
+ */
+#include <math.h>
+
+#include "exercises/check_exercise.h"
+
+#ifndef EX_FIXTURE
+/* ===== YOUR CODE BEGINS ================================================ */
+/* BEGIN SNIPPET your_code */
+
+/* A uniform direction on the hemisphere about +z. */
+static vec3 sample(double u1, double u2)
+{
+    (void)u1, (void)u2;
+    return vec3_make(0.0, 0.0, 1.0); /* TODO */
+}
+
+/* The density of sample() per unit solid angle. */
+static double pdf(vec3 w)
+{
+    (void)w;
+    return 0.0; /* TODO */
+}
+
+/* The uniforms (u[0], u[1]) that sample() maps to the direction w. */
+static void invert(vec3 w, double u[2])
+{
+    (void)w;
+    u[0] = u[1] = 0.0; /* TODO */
+}
+
+/* END SNIPPET your_code */
+/* ===== YOUR CODE ENDS ================================================== */
+#else
+#include "exercises/fixtures/hemisphere.h" /* the suite's reference and slips */
+#endif
+
+/* --- the judge: nothing to change below ----------------------------------- */
+
+static void check_sample(const double *u, mcbox_sample *out, void *ctx)
+{
+    (void)ctx;
+    ex_put3(out->x, sample(u[0], u[1]));
+}
+
+static double check_pdf(const double *x, void *ctx)
+{
+    (void)ctx;
+    return pdf(ex_vec3(x));
+}
+
+static void check_invert(const double *x, double *u, void *ctx)
+{
+    (void)ctx;
+    invert(ex_vec3(x), u);
+}
+
+static void judge(ex_judge *j)
+{
+    mcbox_sampler s = mcbox_sampler_init(MCBOX_HEMISPHERE);
+    s.sample = check_sample, s.pdf = check_pdf, s.invert = check_invert;
+    ex_check_sampler(j, "public check", &s, 3201, 1000000);
+}
+
+const ex_exercise ex_this = {"hemisphere", "5 (#ch-directions)", EX_VARIANT, judge};
