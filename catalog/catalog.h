@@ -11,8 +11,9 @@
  * `bench_samplers`, the chapter programs that estimate integrals over
  * directions (cat_integrate) and the tests of the samplers and of the pdf
  * objects all iterate this one table, so adding a sampler is adding a row.
- * Serves chapters 2-3 and 5-10 (every sampler and density of the
- * book); the layer sits above pdf/ and below the programs.
+ * Serves this book's #ch-integration to #ch-mixture (every sampler and
+ * density they use) and #ch-own-sampler; the layer sits above pdf/ and
+ * below the programs.
  *
  * Nothing here prints or allocates; errors come back as messages.
  */

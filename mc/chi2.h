@@ -5,8 +5,8 @@
  * counts could plausibly come from it. This module does the last step:
  * pooling of sparse cells, the statistic, its upper-tail probability (GSL),
  * and the Sidak-corrected level for a suite of many tests. Histogramming
- * and integration live with the callers (tests/support). Serves chapter 5
- * ("Generating Random Directions") and every sampler after it.
+ * and integration live with the callers (tests/support). Serves this
+ * book's #ch-directions and #ch-tests, and every sampler after them.
  */
 #ifndef MC_CHI2_H
 #define MC_CHI2_H

@@ -2,8 +2,8 @@
  *
  * ISO C has no M_PI, so the project names its own constants with the MC_
  * prefix. Values are the correctly rounded doubles of the exact numbers.
- * Serves every chapter; first used in chapter 1 ("A Simple Monte Carlo
- * Program"), where pi is the quantity being estimated.
+ * Serves every chapter of this book; first used in its #ch-pi, where pi is
+ * the quantity being estimated.
  */
 #ifndef MC_CONSTANTS_H
 #define MC_CONSTANTS_H

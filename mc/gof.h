@@ -7,9 +7,9 @@
  * (adaptive quadrature, never the value at the cell centre) to get the
  * expected counts. The `warp` tool, the chi-square figures of `make plots`
  * and the test suite's harness (tests/support/chi2_harness, a thin wrapper
- * that adds names and CSV dumps) all run through it. Serves chapter 5
- * ("Generating Random Directions") and every sampler and pdf object after
- * it.
+ * that adds names and CSV dumps) all run through it. Serves this book's
+ * #ch-directions and #ch-tests, and every sampler and pdf object after
+ * them.
  *
  * Parameterizations: (cos theta, phi) for directions, where a density per
  * unit solid angle is already a density of the rectangle, because

@@ -6,8 +6,8 @@
  * from every OpenMP thread would be a data race. Every mc/ entry point that
  * reaches GSL (mc_quad_create, mc_chi2_pvalue) calls mc_gsl_quiet first; a
  * C11 call_once makes the single write happen before any of those callers
- * continues. Serves chapter 2 ("One Dimensional MC Integration") and the
- * chi-square tests of chapter 5, through mc/quad.h and mc/chi2.h.
+ * continues. Serves this book's #ch-integration and the chi-square tests
+ * of its #ch-tests, through mc/quad.h and mc/chi2.h.
  */
 #ifndef MC_GSL_QUIET_H
 #define MC_GSL_QUIET_H

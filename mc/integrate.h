@@ -1,13 +1,15 @@
 /* mc/integrate.h - one-dimensional Monte Carlo integration.
  *
- * Chapter 2 ("One Dimensional MC Integration"): the integral of f is the
- * mean of f(X) / p(X) for X drawn with any density p that is positive
- * wherever f is not zero; the closer p follows |f|, the smaller the
- * variance (importance sampling), down to zero when p is proportional to
- * f. This module is that estimator with its error bar, for a sampler given
- * as function pointers (mc/ knows no samplers: samplers/ sits above it),
- * plus the weighted quantile the chapter uses to find the "halfway" point
- * of an integral. Nothing here allocates; the caller owns every array.
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 2 "One
+ * Dimensional MC Integration" (this book's #ch-integration): the integral
+ * of f is the mean of f(X) / p(X) for X drawn with any density p that is
+ * positive wherever f is not zero; the closer p follows |f|, the smaller
+ * the variance (importance sampling), down to zero when p is proportional
+ * to f. This module is that estimator with its error bar, for a sampler
+ * given as function pointers (mc/ knows no samplers: samplers/ sits above
+ * it), plus the weighted quantile that this book's #ch-integration uses to
+ * find the "halfway" point of an integral. Nothing here allocates; the
+ * caller owns every array.
  */
 #ifndef MC_INTEGRATE_H
 #define MC_INTEGRATE_H
@@ -86,7 +88,7 @@ int mc_weighted_compare(const void *a, const void *b);
  * reaches q times the total, 0 < q < 1. With s the record of
  * mc_integrate_is for an integrand f >= 0, this estimates the point x_q
  * where the integral of f from the left end reaches q of the whole (q = 1/2:
- * the chapter's "halfway" point).
+ * the "halfway" point of this book's #ch-integration).
  *
  * Its error, by the delta method for an estimating equation: x_q solves
  * G(x) = mean of w_i (1{x_i <= x} - q) = 0, and E G has slope f(x_q) at the

@@ -1,6 +1,7 @@
 /* mc/pi.h - estimating pi by throwing points at a square.
  *
- * Chapter 1 ("A Simple Monte Carlo Program"): the fraction of uniform
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 1 "A
+ * Simple Monte Carlo Program" (this book's #ch-pi): the fraction of uniform
  * points of the unit square that land in the quarter disc x^2 + y^2 < 1 is
  * pi/4, so 4 hits / n estimates pi. This module holds the estimators the
  * `pi` program, the tests and the benchmark share:

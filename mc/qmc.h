@@ -1,10 +1,10 @@
 /* mc/qmc.h - quasi-Monte Carlo point sources: radical inverse, Hammersley,
  * Halton, Sobol, and their random scrambles.
  *
- * Serves the chapter "Quasi-Monte Carlo", which follows the stratified
- * samples of chapter 1: instead of independent uniforms, points of [0,1)^D
- * that fill the cube more evenly than chance does, so that the error of a
- * smooth integrand can fall like N^-1 (or N^-3/2 once scrambled) instead of
+ * Serves this book's #ch-qmc, which follows the stratified samples of its
+ * #ch-pi: instead of independent uniforms, points of [0,1)^D that fill the
+ * cube more evenly than chance does, so that the error of a smooth
+ * integrand can fall like N^-1 (or N^-3/2 once scrambled) instead of
  * N^-1/2.
  *
  * Every point is a pure function of its index (and of the seed of its

@@ -6,7 +6,7 @@
  * over each histogram cell, never just evaluated at the cell centre). The
  * work is GSL's adaptive Gauss-Kronrod with extrapolation (QAGS), which also
  * copes with integrable endpoint singularities such as log(sin x) at 0.
- * Serves chapter 2 ("One Dimensional MC Integration") and every sampler.
+ * Serves this book's #ch-integration and every sampler.
  *
  * Allocation: GSL's adaptive rules need a workspace. It is created once by
  * mc_quad_create and reused; nothing else in mc/ allocates.

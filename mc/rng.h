@@ -3,8 +3,8 @@
  * The generator is O'Neill's PCG32 (XSH-RR output, 64-bit LCG state), the one
  * pbrt and Nori use: small, fast, statistically strong, and with 2^63
  * selectable streams. State is always explicit; there is no global generator
- * and no rand() anywhere in mcbox. Serves every chapter, starting with
- * chapter 1 ("A Simple Monte Carlo Program").
+ * and no rand() anywhere in mcbox. Serves every chapter of this book,
+ * starting with #ch-pi.
  *
  * Streams: mc_rng_seed(rng, seed, stream) is PCG's own (initstate, initseq)
  * seeding, bit-compatible with the reference pcg32_srandom_r. For threads,

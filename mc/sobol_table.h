@@ -1,7 +1,7 @@
 /* mc/sobol_table.h - the generator matrices of the Sobol sequence.
  *
- * Serves the chapter "Quasi-Monte Carlo" through mc/qmc.h, which is the
- * interface to use; this table is its data.
+ * Serves this book's #ch-qmc through mc/qmc.h, which is the interface to
+ * use; this table is its data.
  *
  * Provenance: Joe and Kuo's direction numbers new-joe-kuo-6.21201 (S. Joe
  * and F. Y. Kuo, "Constructing Sobol sequences with better two-dimensional

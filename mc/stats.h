@@ -3,8 +3,8 @@
  * A Monte Carlo estimate is only useful with its standard error. This module
  * keeps a running mean and variance (Welford), merges partial results from
  * threads (Chan et al.), and turns an estimate and a known value into a
- * z-score with its two-sided p-value. Serves chapter 1 ("A Simple Monte Carlo
- * Program") and chapter 2 ("One Dimensional MC Integration") onwards.
+ * z-score with its two-sided p-value. Serves this book's #ch-pi and
+ * #ch-integration onwards.
  */
 #ifndef MC_STATS_H
 #define MC_STATS_H

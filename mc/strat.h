@@ -1,8 +1,10 @@
 /* mc/strat.h - jittered (stratified) sample sets.
  *
- * Chapter 1's "Stratified Samples (Jittering)": split [0,1) into n equal
- * strata (1D) or [0,1)^2 into a grid of cells (2D) and put one uniform point
- * in each. For smooth integrands the error then falls faster than N^-1/2.
+ * The stratified samples ("jittering") of Shirley, "Ray Tracing: The Rest
+ * of Your Life" (v1.123), chapter 1 (this book's #ch-pi): split [0,1) into
+ * n equal strata (1D) or [0,1)^2 into a grid of cells (2D) and put one
+ * uniform point in each. For smooth integrands the error then falls faster
+ * than N^-1/2.
  *
  * Any N, never a silent mismatch: the book's program takes a sqrt(N) x
  * sqrt(N) grid, traces floor(sqrt(N))^2 samples and divides by N, which is

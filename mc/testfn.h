@@ -1,7 +1,7 @@
 /* mc/testfn.h - integrands over the unit cube [0,1)^D with closed-form
  * integrals: the referees of the quasi-Monte Carlo experiments.
  *
- * Serves chapter 13 ("Quasi-Monte Carlo"): the `qmc` program, its figures
+ * Serves this book's #ch-qmc: the `qmc` program, its figures
  * and the tests estimate these integrals with random and low-discrepancy
  * points, and compare the estimates with the exact values computed here.
  * They differ in the one property that decides how fast a point set

@@ -1,7 +1,9 @@
 /* mc/trig.h - sine and cosine of a whole turn fraction, sin(2 pi u) and
  * cos(2 pi u), for the azimuth of every direction sampler.
  *
- * Every directional warp of chapters 2, 5 and 6 draws its azimuth as
+ * Every directional warp of this book's #ch-sphere, #ch-directions and
+ * #ch-onb (after Shirley, "Ray Tracing: The Rest of Your Life" (v1.123),
+ * the second chapter 2 and chapters 5 and 6) draws its azimuth as
  * phi = 2 pi u with u uniform in [0, 1), and then needs cos phi and sin phi.
  * The libm route (sin and cos of the product 2 pi u) costs two general
  * argument reductions per direction and was the largest single item of the

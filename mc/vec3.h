@@ -2,8 +2,8 @@
  *
  * Directions, points and colours are all vec3, passed and returned by value
  * (24 bytes: cheaper to copy than to alias). Everything here is static
- * inline so that it costs nothing at -O2 and links at -O0. Serves chapter 2
- * ("MC Integration on the Sphere of Directions") onwards.
+ * inline so that it costs nothing at -O2 and links at -O0. Serves this
+ * book's #ch-sphere onwards.
  */
 #ifndef MC_VEC3_H
 #define MC_VEC3_H

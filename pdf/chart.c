@@ -103,8 +103,10 @@ static double unstretch(double s)
 /* The direction from origin to the plane point corner + s u + t v, and the
  * solid angle per unit (s, t) there: the normalized direction changes by
  * u_perp / r per unit s (u_perp = u without its component along the
- * direction), so d omega = |u_perp x v_perp| / r^2 ds dt. That is chapter
- * 7's |cos| A / r^2 derived a second way, as a check on pdf.c. */
+ * direction), so d omega = |u_perp x v_perp| / r^2 ds dt. That is the
+ * |cos| A / r^2 of Shirley, "Ray Tracing: The Rest of Your Life" (v1.123),
+ * chapter 7 (this book's #ch-lights), derived a second way, as a check on
+ * pdf.c. */
 static vec3 plane_direction(const pdf_chart *c, double s, double t, double *jac)
 {
     vec3 to = vec3_sub(vec3_madd(vec3_madd(c->corner, c->u, s), c->v, t), c->origin);

@@ -1,17 +1,18 @@
 /* pdf/chart.h - charts of the sphere of directions in which the density of
  * a pdf object is smooth on every histogram cell.
  *
- * Checking a pdf object (chapters 7, 8 and 10: toward a light, mixtures,
- * lists) means histogramming its directions and integrating its value()
- * over every cell by adaptive quadrature. Quadrature is fast on smooth
- * integrands and hopeless on a jump that cuts a cell along a curve: it
- * bisects toward the jump until its 1e-12 target and runs out of
+ * Checking a pdf object (toward a light, mixtures, lists: Shirley, "Ray
+ * Tracing: The Rest of Your Life" (v1.123), chapters 7, 8 and 10; this book's
+ * #ch-lights and #ch-mixture) means histogramming its directions and
+ * integrating its value() over every cell by adaptive quadrature. Quadrature
+ * is fast on smooth integrands and hopeless on a jump that cuts a cell along
+ * a curve: it bisects toward the jump until its 1e-12 target and runs out of
  * subintervals (about a second per cell). A parallelogram light seen in
  * (cos theta, phi) has exactly such edges. A chart is a map from a
  * rectangle onto (part of) the sphere of directions chosen so that every
  * jump of the density lies on a line x = const or y = const that the
- * caller makes a cell edge; the density of the chart is value(d) times
- * the Jacobian d omega / (dx dy).
+ * caller makes a cell edge; the density of the chart is value(d) times the
+ * Jacobian d omega / (dx dy).
  *
  * - spherical: (cos theta, phi) about an axis over [cos_lo, 1] x [0, 2 pi);
  *   Jacobian 1, because d omega = d(cos theta) d phi. For densities with

@@ -1,17 +1,21 @@
 /* pdf/experiments.h - the integrals over directions that the chapter
  * programs estimate, and the exact values they are compared with.
  *
- * Chapter 2 ("MC Integration on the Sphere of Directions"): the integral of
- * f over directions is the mean of f(d) / p(d) for d drawn with a density
- * p per unit solid angle that is positive wherever f is not 0. Here that
- * estimator is written for a pdf object of pdf/pdf.h (the warps of
- * samplers/ have theirs in the catalog, cat_integrate), together with the closed forms the programs
- * sphere_importance, cos_cubed, light_pdf (chapter 7, "Sampling Lights
- * Directly"), sphere_light (chapter 10 and the lecture's point light of
- * equal flux), mixture (chapter 8, "Mixture Densities") and projected_area
- * (the SAH post: the mean projected area of a convex body is a quarter of
- * its surface area) print. Library code, so that the tests z-test exactly
- * what the programs compute. Nothing here allocates.
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), the second
+ * chapter 2 "MC Integration on the Sphere of Directions" (this book's
+ * #ch-sphere): the integral of f over directions is the mean of f(d) / p(d)
+ * for d drawn with a density p per unit solid angle that is positive
+ * wherever f is not 0. Here that estimator is written for a pdf object of
+ * pdf/pdf.h (the warps of samplers/ have theirs in the catalog,
+ * cat_integrate), together with the closed forms the programs
+ * sphere_importance, cos_cubed, light_pdf ((v1.123) chapter 7 "Sampling
+ * Lights Directly"), sphere_light ((v1.123) chapter 10, and the point light
+ * of equal flux of the lecture slides "Solving the Rendering Equation"),
+ * mixture ((v1.123) chapter 8 "Mixture Densities") and projected_area (the
+ * Cranberry Lair blog post on SAH BVH construction: the mean projected
+ * area of a convex body is a quarter of its surface area) print. Library
+ * code, so that the tests z-test exactly what the programs compute.
+ * Nothing here allocates.
  */
 #ifndef PDF_EXPERIMENTS_H
 #define PDF_EXPERIMENTS_H

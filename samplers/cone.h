@@ -1,18 +1,20 @@
 /* samplers/cone.h - uniform directions in a cone about +z, and the cone
  * that a sphere subtends from a point.
  *
- * Chapter 10 ("Cleaning Up pdf Management", the book's random_to_sphere):
- * from a point outside a sphere of radius R at distance d, the sphere fills
- * the cone of half-angle theta_max with sin theta_max = R / d, so
- * cos theta_max = sqrt(1 - R^2 / d^2); sampling that cone uniformly samples
- * every direction that can hit the sphere, and nothing else. The book's
- * formula takes the square root of a negative number from inside the sphere
- * (NaN); here every direction hits the sphere from inside, so the cone is
- * the whole sphere: cos theta_max = -1. Exactly on the surface (the book's
- * tangent case, whose exact answer is the hemisphere, cos theta_max = 0) the
- * agreed contract also returns -1: a superset of the directions that hit,
- * which keeps an estimator that samples the cone unbiased, and the same
- * answer as a point a rounding error inside.
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 10
+ * "Cleaning Up pdf Management" (that book's random_to_sphere; this book's
+ * #ch-directions and #ch-lights): from a point outside a sphere of radius R
+ * at distance d, the sphere fills the cone of half-angle theta_max with
+ * sin theta_max = R / d, so cos theta_max = sqrt(1 - R^2 / d^2); sampling
+ * that cone uniformly samples every direction that can hit the sphere, and
+ * nothing else. The book's formula takes the square root of a negative
+ * number from inside the sphere (NaN); here every direction hits the sphere
+ * from inside, so the cone is the whole sphere: cos theta_max = -1. Exactly
+ * on the surface (the book's tangent case, whose exact answer is the
+ * hemisphere, cos theta_max = 0) the agreed contract also returns -1: a
+ * superset of the directions that hit, which keeps an estimator that
+ * samples the cone unbiased, and the same answer as a point a rounding
+ * error inside.
  *
  * Two parameterizations of the same cone. The cone's solid angle is
  * 2 pi h with h = 1 - cos theta_max, the height of the cap it cuts from the

@@ -1,7 +1,9 @@
 /* samplers/discrete.h - sampling one of n events with given weights.
  *
- * Chapter 2 ("One Dimensional MC Integration") in its discrete form, the
- * lecture's first inverse-transform example: events k = 0 .. n-1 with
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 2 "One
+ * Dimensional MC Integration", in its discrete form: the first
+ * inverse-transform example of the lecture slides "Solving the Rendering
+ * Equation" (this book's #ch-integration): events k = 0 .. n-1 with
  * probabilities p_k = w_k / sum(w). Two samplers, both built from a weight
  * array into storage the caller provides (nothing here allocates):
  *
@@ -15,9 +17,9 @@
  * Events of weight 0 are never drawn by either. Both return, if asked, the
  * part of u that the choice did not use, rescaled to [0, 1) ("u_remapped"),
  * so one uniform can pick an event and then drive a continuous warp.
- * The mixture densities of chapter 8 ("Mixture Densities") do not use
- * these tables: pdf/pdf.c picks a component with its own running sum over
- * the few weights of a mixture.
+ * The mixture densities of (v1.123) chapter 8 "Mixture Densities" (this
+ * book's #ch-mixture) do not use these tables: pdf/pdf.c picks a component
+ * with its own running sum over the few weights of a mixture.
  */
 #ifndef SMP_DISCRETE_H
 #define SMP_DISCRETE_H

@@ -1,12 +1,14 @@
 /* samplers/hemisphere.h - directions on the hemisphere about +z: uniform,
  * cosine-weighted (three mappings) and uniform in (theta, phi).
  *
- * Chapter 3 ("Light Scattering": the Lambertian pdf cos theta / pi) and
- * chapter 5 ("Generating Random Directions"); an onb (mc/onb.h) carries the
- * results to a surface normal (chapter 6, "Ortho-normal Bases"). Every
- * density is per unit SOLID ANGLE. Coordinates: u1 drives the azimuth
- * phi = 2 pi u1, u2 the polar angle. The hemisphere is z >= 0; its rim
- * z = 0 has measure zero, where the cosine density is 0.
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 3 "Light
+ * Scattering" (the Lambertian pdf cos theta / pi) and chapter 5 "Generating
+ * Random Directions" (this book's #ch-scattering and #ch-directions); an
+ * onb (mc/onb.h) carries the results to a surface normal ((v1.123)
+ * chapter 6 "Ortho-normal Bases"; this book's #ch-onb). Every density is
+ * per unit SOLID ANGLE. Coordinates: u1 drives the azimuth phi = 2 pi u1,
+ * u2 the polar angle. The hemisphere is z >= 0; its rim z = 0 has measure
+ * zero, where the cosine density is 0.
  */
 #ifndef SMP_HEMISPHERE_H
 #define SMP_HEMISPHERE_H
@@ -38,7 +40,8 @@ vec3 smp_cosine_hemisphere_sample(double u1, double u2);
  * z = sqrt(1 - x^2 - y^2). Uniform in area below, cosine-weighted above,
  * because the projection onto the disc has Jacobian cos theta. */
 vec3 smp_cosine_hemisphere_sample_malley(double u1, double u2);
-/* The cosine-lobe post's mapping: theta = acos(1 - 2 u2) / 2. Since
+/* The mapping of the Cranberry Lair blog post deriving cosine-lobe
+ * sampling: theta = acos(1 - 2 u2) / 2. Since
  * cos^2 theta = (1 + cos 2 theta) / 2 = 1 - u2, this is the book's mapping
  * written through angles (equal as functions of u, up to rounding). */
 vec3 smp_cosine_hemisphere_sample_acos(double u1, double u2);

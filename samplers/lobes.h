@@ -1,11 +1,12 @@
 /* samplers/lobes.h - glossy lobes about +z: the Phong lobe cos^n theta and
  * the GGX (Trowbridge-Reitz) microfacet distribution.
  *
- * From the table of hemisphere mappings in the lecture on solving the
- * rendering equation; they extend
- * chapter 5 ("Generating Random Directions") beyond the Lambertian case.
- * Densities are per unit SOLID ANGLE on the hemisphere z >= 0; phi = 2 pi u1
- * and u2 drives the polar angle, as in samplers/hemisphere.h.
+ * From the table of hemisphere mappings in the lecture slides "Solving the
+ * Rendering Equation"; they extend Shirley, "Ray Tracing: The Rest of Your
+ * Life" (v1.123), chapter 5 "Generating Random Directions" beyond the
+ * Lambertian case (this book's #ch-directions). Densities are per unit
+ * SOLID ANGLE on the hemisphere z >= 0; phi = 2 pi u1 and u2 drives the
+ * polar angle, as in samplers/hemisphere.h.
  */
 #ifndef SMP_LOBES_H
 #define SMP_LOBES_H
@@ -29,7 +30,8 @@ vec2 smp_phong_lobe_invert(vec3 w, double n);
 
 /* The microfacet normal h with cos^2 theta_h = (1 - u2) / (u2 (alpha^2 - 1)
  * + 1), the inverse CDF of the polar marginal 2 pi D cos sin. alpha in
- * (0, 1]: the roughness (the lecture sets alpha = r_p^2). */
+ * (0, 1]: the roughness (the lecture slides "Solving the Rendering
+ * Equation" set alpha = r_p^2). */
 vec3 smp_ggx_sample(double u1, double u2, double alpha);
 /* D(h) cos theta_h per unit solid angle, where
  * D = alpha^2 / (pi (cos^2 theta_h (alpha^2 - 1) + 1)^2) is the normal

@@ -3,12 +3,12 @@
  * parallelogram, and the surface of a sphere.
  *
  * The disc is the projection of the cosine-weighted hemisphere (Malley's
- * method, chapter 5 "Generating Random Directions"); parallelograms and
- * sphere surfaces are the area lights of chapter 7 ("Sampling Lights
- * Directly") and chapter 10 ("Cleaning Up pdf Management", the sphere
- * sampled as a light). Every density
- * here is per unit AREA of the shape; samplers/measure.h converts one to
- * per unit solid angle.
+ * method; this book's #ch-directions); parallelograms and sphere surfaces
+ * are the area lights of Shirley, "Ray Tracing: The Rest of Your Life"
+ * (v1.123), chapter 7 "Sampling Lights Directly" and chapter 10 "Cleaning
+ * Up pdf Management" (the sphere sampled as a light); this book's
+ * #ch-lights. Every density here is per unit AREA of the shape;
+ * samplers/measure.h converts one to per unit solid angle.
  *
  * Trio convention: smp_X_sample(u1, u2, shape...) maps (u1, u2) in [0,1)^2
  * to the shape, smp_X_pdf(point, shape...) is the density (0 off the shape,

@@ -1,13 +1,14 @@
 /* samplers/sphere.h - uniform directions on the whole unit sphere, three
  * ways.
  *
- * Chapter 2 ("MC Integration on the Sphere of Directions") and chapter 5
- * ("Generating Random Directions"): the inverse-CDF mapping (z uniform in
- * [-1, 1], Archimedes' hat-box theorem), a normalized vector of three
- * independent normals (the Gaussian is rotation invariant), and rejection
- * from the unit ball (the book's random_in_unit_sphere, normalized). All
- * three have the density 1/(4 pi) per unit solid angle; the tests check that
- * they agree.
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), the second
+ * chapter 2 "MC Integration on the Sphere of Directions" and chapter 5
+ * "Generating Random Directions" (this book's #ch-sphere): the inverse-CDF
+ * mapping (z uniform in [-1, 1], Archimedes' hat-box theorem), a normalized
+ * vector of three independent normals (the Gaussian is rotation invariant),
+ * and rejection from the unit ball (that book's random_in_unit_sphere,
+ * normalized). All three have the density 1/(4 pi) per unit solid angle;
+ * the tests check that they agree.
  */
 #ifndef SMP_SPHERE_H
 #define SMP_SPHERE_H

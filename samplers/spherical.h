@@ -5,8 +5,8 @@
  * the angle from +z, phi in [0, 2 pi) the azimuth from +x towards +y. The
  * warps take cos theta rather than theta because d omega = d(cos theta) d phi:
  * in (cos theta, phi) a density per unit solid angle is a plain density of
- * the rectangle [-1, 1] x [0, 2 pi). Serves chapter 2 ("MC Integration on
- * the Sphere of Directions") and chapter 5 ("Generating Random Directions").
+ * the rectangle [-1, 1] x [0, 2 pi). Serves this book's #ch-sphere and
+ * #ch-directions.
  */
 #ifndef SMP_SPHERICAL_H
 #define SMP_SPHERICAL_H

@@ -1,11 +1,13 @@
 /* samplers/warp1d.h - one-dimensional warps by inverting the CDF.
  *
- * Chapter 2 ("One Dimensional MC Integration"): to draw x with density p,
- * push a uniform u through the inverse of the CDF P. Each family here is a
- * trio: _sample(u) = P^-1(u), _pdf(x) = p(x) per unit length (0 outside the
- * support, never NaN), _invert(x) = P(x) (so invert(sample(u)) == u). The
- * inputs u are uniform in [0, 1]; the endpoints map to the ends of the
- * support. Used by the integrate_x_sq, inverse_cdf and log_sin programs.
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 2 "One
+ * Dimensional MC Integration" (this book's #ch-integration): to draw x with
+ * density p, push a uniform u through the inverse of the CDF P. Each family
+ * here is a trio: _sample(u) = P^-1(u), _pdf(x) = p(x) per unit length (0
+ * outside the support, never NaN), _invert(x) = P(x) (so
+ * invert(sample(u)) == u). The inputs u are uniform in [0, 1]; the
+ * endpoints map to the ends of the support. Used by the integrate_x_sq,
+ * inverse_cdf and log_sin programs.
  *
  *   linear     p(x) = x / 2        on [0, 2]   x = sqrt(4 u)     (P = x^2/4)
  *   quadratic  p(x) = 3 x^2 / 8    on [0, 2]   x = 2 cbrt(u)     (P = x^3/8)

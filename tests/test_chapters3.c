@@ -1,10 +1,11 @@
 /* tests/test_chapters3.c - the estimators behind the chapter programs of
- * chapters 2-10 (sphere_importance, cos_cubed, light_pdf, sphere_light,
- * projected_area, mixture; pdf/experiments.h): z-tests against exact
- * values derived here independently (closed forms, moments, GSL
- * quadrature), each with a wrong estimator the same z-test rejects; then
- * the programs themselves, run from $MC_BUILD/bin: every CSV row they print
- * has |z| < 4.
+ * this book's #ch-sphere to #ch-mixture, after Shirley, "Ray Tracing: The
+ * Rest of Your Life" (v1.123), chapters 2-10 (sphere_importance, cos_cubed,
+ * light_pdf, sphere_light, projected_area, mixture; pdf/experiments.h):
+ * z-tests against exact values derived here independently (closed forms,
+ * moments, GSL quadrature), each with a wrong estimator the same z-test
+ * rejects; then the programs themselves, run from $MC_BUILD/bin: every CSV
+ * row they print has |z| < 4.
  *
  * Every z-test: |z| < 4, two-sided false-alarm rate 6.3e-5 per test.
  */
@@ -165,8 +166,9 @@ typedef struct quad_light {
 static const quad_light LIGHT = {{-0.3, 0.2, 1.0}, {0.8, 0.0, 0.2}, {0.0, 0.6, 0.1}, 4.0};
 
 /* The area form of the irradiance, integrated over the light's (s, t):
- * L cos_x cos_l A / r^2 (chapter 7's measure change, applied the other way
- * round from the pdf). */
+ * L cos_x cos_l A / r^2 (the measure change of Shirley, "Ray Tracing: The
+ * Rest of Your Life" (v1.123), chapter 7, applied the other way round from
+ * the pdf). */
 static double area_integrand(double s, double t, void *params)
 {
     const quad_light *l = params;

@@ -32,7 +32,7 @@
 enum { CAPTURE = 1 << 16 };
 
 static char tmp[64];       /* this run's scratch directory */
-static char root[PATH_MAX]; /* the source tree, absolute ($MC_SOURCE or .) */
+static char root[2048];    /* the source tree, absolute ($MC_SOURCE or .) */
 
 typedef struct run {
     int status;
@@ -607,8 +607,11 @@ static void test_check_cli_reports(void **state)
 
 static int setup(void **state)
 {
-    if (negctl_group_setup(state) != 0 || !realpath(mc_test_source_dir(), root))
+    char real[PATH_MAX];
+    if (negctl_group_setup(state) != 0 || !realpath(mc_test_source_dir(), real) ||
+        strlen(real) >= sizeof root)
         return -1;
+    memcpy(root, real, strlen(real) + 1);
     snprintf(tmp, sizeof tmp, "/tmp/mcbox-check-cli-XXXXXX");
     r_ = malloc(sizeof *r_);
     return mkdtemp(tmp) && r_ ? 0 : -1;

@@ -27,8 +27,9 @@ static const char *const families[] = {"discrete"};
 
 enum { MAXN = 128 };
 
-/* The lecture's eight events, weights not normalized ("high-entropy"
- * values so that a missing factor cannot hide). */
+/* The eight events of the lecture slides "Solving the Rendering
+ * Equation", weights not normalized ("high-entropy" values so that a
+ * missing factor cannot hide). */
 static const double w8[8] = {1.5, 4.0, 2.385, 0.25, 6.0, 3.1, 0.75, 2.0};
 
 /* A table of either kind over weights w[0..n), for the unit tests of the

@@ -1,9 +1,9 @@
-/* tests/test_integrate.c - the chapter-2 estimators of mc/integrate.h with
- * the warps of samplers/warp1d.h: the integral of x^2 under three
- * densities, the halfway point of exp(-x/2pi) sin^2 x, and the integral of
- * ln(sin x), each z-tested against a value derived here independently
- * (closed form, GSL quadrature, GSL root finding), each with a biased
- * estimator the same test rejects. */
+/* tests/test_integrate.c - the estimators of mc/integrate.h (this book's
+ * #ch-integration) with the warps of samplers/warp1d.h: the integral of x^2
+ * under three densities, the halfway point of exp(-x/2pi) sin^2 x, and the
+ * integral of ln(sin x), each z-tested against a value derived here
+ * independently (closed form, GSL quadrature, GSL root finding), each with a
+ * biased estimator the same test rejects. */
 #define _POSIX_C_SOURCE 200809L /* popen */
 
 #include "tests/support/mc_test.h"

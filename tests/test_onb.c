@@ -3,7 +3,8 @@
  * code was once left-handed), exact near both poles where the classic
  * constructions lose precision or divide by zero, and to_world / to_local
  * inverse to each other. A left-handed basis must fail the same check.
- * Chapter 6 ("Ortho-normal Bases").
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 6
+ * "Ortho-normal Bases"; this book's #ch-onb.
  */
 #include "tests/support/mc_test.h"
 

@@ -283,8 +283,8 @@ static void test_qmc_halton_boxes(void **state)
 /* ---- unbiasedness -------------------------------------------------------- */
 
 /* Smooth test integrands over [0,1]^dim with closed-form integrals: three
- * of mc/testfn.h (the ones the chapter's program uses) and 1 / (1 + x + y),
- * whose mixed derivative never vanishes. */
+ * of mc/testfn.h (the ones the `qmc` program of this book's #ch-qmc uses)
+ * and 1 / (1 + x + y), whose mixed derivative never vanishes. */
 typedef struct integrand {
     const char *name;
     unsigned dim;

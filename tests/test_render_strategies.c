@@ -1,7 +1,8 @@
-/* tests/test_render_strategies.c - chapter 4's lesson made a test: the five
- * sampling strategies must render the same image of the Lambertian
- * Cornell box, region by region, and a strategy with a wrong light density
- * must be told apart; so must the samplers (render/sampler.h), and a
+/* tests/test_render_strategies.c - the lesson of Shirley, "Ray Tracing: The
+ * Rest of Your Life" (v1.123), chapter 4 (this book's #ch-nee-mis) made a
+ * test: the five sampling strategies must render the same image of the
+ * Lambertian Cornell box, region by region, and a strategy with a wrong light
+ * density must be told apart; so must the samplers (render/sampler.h), and a
  * sampler that drops a dimension. */
 #include "tests/support/mc_test.h"
 

@@ -3,7 +3,9 @@
  * theta-phi. Every sampler passes chi-square, normalization, domain and
  * round trip; the three uniform-sphere and the three cosine methods agree;
  * and the negative-control bank shows each check catching the bug it is
- * for. Chapters 2, 3 and 5.
+ * for. Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), the second
+ * chapter 2 and chapters 3 and 5; this book's #ch-sphere, #ch-scattering
+ * and #ch-directions.
  *
  * Statistics (all seeds overridable with MC_TEST_SEED): chi-square with
  * 10^6 samples in 50 x 100 cells of (cos theta, phi), rejected at

@@ -1,11 +1,11 @@
 /* tests/test_samplers_lobes.c - the Phong lobe, GGX, the uniform cone, the
- * cone that a sphere subtends (chapter 10, including the point inside the
- * sphere, and spheres so small or far, R / d down to 1e-150, that
- * 1 - cos theta_max must be computed without cancellation) and the
- * area-to-solid-angle conversion of chapter 7. Every
- * sampler and parameter set passes chi-square, normalization, domain and
- * round trip; negative controls show the checks catching the bugs they are
- * for.
+ * cone that a sphere subtends (Shirley, "Ray Tracing: The Rest of Your Life"
+ * (v1.123), chapter 10, including the point inside the sphere, and spheres so
+ * small or far, R / d down to 1e-150, that 1 - cos theta_max must be computed
+ * without cancellation) and the area-to-solid-angle conversion of (v1.123)
+ * chapter 7; this book's #ch-directions and #ch-lights. Every sampler and
+ * parameter set passes chi-square, normalization, domain and round trip;
+ * negative controls show the checks catching the bugs they are for.
  *
  * Statistics (seeds overridable with MC_TEST_SEED): chi-square with 10^6
  * samples per case at chi2_suite_alpha() = 1.57e-4 (Sidak: 1% over the

@@ -1,8 +1,10 @@
 /* tests/test_samplers_planar.c - uniform points on the unit square, the
  * unit disc (polar and concentric), the triangle, a parallelogram and a
  * sphere's surface: chi-square, normalization, domain, round trip, and
- * negative controls. Chapters 5 (the disc under the cosine hemisphere), 7
- * (parallelogram lights) and 10 (sphere lights).
+ * negative controls. This book's #ch-directions (the disc under the cosine
+ * hemisphere) and #ch-lights (the parallelogram lights of Shirley, "Ray
+ * Tracing: The Rest of Your Life" (v1.123), chapter 7, and the sphere
+ * lights of its chapter 10).
  *
  * Statistics (seeds overridable with MC_TEST_SEED): chi-square with 10^6
  * samples per case at chi2_suite_alpha() = 1.57e-4 (Sidak: 1% over the

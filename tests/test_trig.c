@@ -1,6 +1,7 @@
-/* tests/test_trig.c - mc_sincos_turn of mc/trig.h, the azimuth's sin and
- * cos of every direction sampler (chapters 2, 5 and 6), against long double
- * sinl/cosl of 2 pi u: at most 4e-16 absolute (about 2 ulps of values near
+/* tests/test_trig.c - mc_sincos_turn of mc/trig.h, the azimuth's sin and cos
+ * of every direction sampler (this book's #ch-sphere, #ch-directions and
+ * #ch-onb), against long double sinl/cosl of 2 pi u: at most 4e-16 absolute
+ * (about 2 ulps of values near
  * 1) over a dense grid of u in [0, 1), 10^6 random u, the neighbours of
  * every octant boundary and a few turns outside [0, 1); exact at the
  * quarter turns. Truncating the series one term early, or reducing the

@@ -9,8 +9,8 @@
  * rectangle, or in cells where the pdf integrates to zero, are failures no
  * p-value may dilute. A chi-square test barely sees a pdf that is wrong by
  * a constant factor, so the harness also integrates the density over the
- * whole rectangle: the normalization check. Serves chapter 5 ("Generating
- * Random Directions") and every sampler after it (chapters 6-8, 10).
+ * whole rectangle: the normalization check. Serves this book's #ch-tests
+ * and every sampler it checks (#ch-directions to #ch-mixture).
  *
  * The work is mc/gof.h's (the same code behind `warp chi2` and the plots);
  * this layer adds what a test suite needs: a name per experiment, the

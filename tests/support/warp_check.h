@@ -6,8 +6,8 @@
  * test that is no sampler of the library, its own functions.
  * The checks RETURN their measurements instead of asserting, so that the
  * same check can be required to pass on a correct case and to fail on a
- * negative control. Serves chapter 5 ("Generating Random Directions") and
- * the samplers of chapters 6-8 and 10.
+ * negative control. Serves this book's #ch-tests and the samplers of its
+ * #ch-directions to #ch-mixture.
  *
  *  - chi-square goodness of fit (tests/support/chi2_harness.h);
  *  - normalization: the pdf integrated over the parameter rectangle;
