@@ -553,93 +553,151 @@ static const double *node_point(size_t at, const void *src)
     return nd->jac[at] != 0.0 ? nd->pts + at * 3 : NULL;
 }
 
-/* Cell probabilities from pdf_batch, by a fixed rule: the tensor
- * Gauss-Legendre rule of quad_order points per axis on each half (1D) or
- * quarter (2D) of every cell, the chart's Jacobian at each node times the
- * density there. The same rule on the whole cell is evaluated alongside:
- * a rule of fixed order converges slowly on a density that jumps inside
- * a cell (a light's edge, the triangle's hypotenuse) or is singular at a
- * corner. If the error of the rule falls as h^a with the panel's width h,
- * the finer sum's error is the two sums' difference times
- * 2^-a / (1 - 2^-a): 1 for a jump (a = 1), 2.41 for an inverse square root
- * singularity (a = 1/2, the density of uniform theta at the pole). Three
- * times the difference, summed over the cells, is therefore the error
- * estimate. All nodes go to the density in one batch. */
+/* The tensor Gauss-Legendre rule of n points per axis on the chart box b
+ * (x0, x1, y0, y1): its nodes' points into pts and their weights times
+ * the chart's Jacobian into jac (0 where the chart maps a node to no
+ * point, or beyond the triangle). Returns the nodes written, or 0 when
+ * the rule could not be made. */
+static size_t rule_nodes(const mcbox_check *c, const double b[4], int n, double *pts, double *jac)
+{
+    int dims = c->spec.dims;
+    double gx[64], gw[64], gy[64], gv[64];
+    if (mc_quad_gauss_legendre(n, b[0], b[1], gx, gw) != 0 ||
+        (dims == 2 && mc_quad_gauss_legendre(n, b[2], b[3], gy, gv) != 0))
+        return 0;
+    size_t count = dims == 2 ? (size_t)n * (size_t)n : (size_t)n;
+    for (size_t k = 0; k < count; k++) {
+        size_t i = dims == 2 ? k / (size_t)n : k, j = dims == 2 ? k % (size_t)n : 0;
+        double p[2] = {gx[i], dims == 2 ? gy[j] : 0.0};
+        double w = gw[i] * (dims == 2 ? gv[j] : 1.0);
+        recorder rec = {pts + k * 3, false};
+        double jv = 0.0;
+        if (!masked(c, p))
+            jv = cat_chart_density_of(&c->st, p, record_point, &rec);
+        if (!rec.called)
+            memset(pts + k * 3, 0, 3 * sizeof *pts);
+        jac[k] = rec.called ? w * jv : 0.0;
+    }
+    return count;
+}
+
+/* The rule's sum over nodes [from, from + count): the Jacobian-weighted
+ * densities, NaN when a density there is negative or not finite (the test
+ * then rejects the cell instead of pooling it away). */
+static double rule_sum(const double *jac, const double *vals, size_t from, size_t count)
+{
+    double sum = 0.0;
+    for (size_t a = from; a < from + count; a++) {
+        if (jac[a] != 0.0 && !(vals[a] >= 0.0 && isfinite(vals[a])))
+            return (double)NAN;
+        sum += jac[a] * vals[a];
+    }
+    return sum;
+}
+
+/* Cell probabilities from pdf_batch, by fixed rules in two batches. First
+ * every cell gets the Gauss-Legendre rule of quad_order points per axis
+ * (the probability) and of quad_order / 2 (a check): on a smooth density
+ * both are exact far below the histogram's resolution and agree. Where
+ * they disagree, the density jumps inside the cell (a light's edge, the
+ * triangle's hypotenuse) or is singular at a corner, and a rule of fixed
+ * order converges slowly there; such a cell is integrated again, by the
+ * full rule on each of its halves (1D) or quarters (2D). If the error of
+ * the rule falls as h^a with the panel's width h, the finer sum's error is
+ * the two sums' difference times 2^-a / (1 - 2^-a): 1 for a jump (a = 1),
+ * 2.41 for an inverse square root singularity (a = 1/2, the density of
+ * uniform theta at the pole). Three times the difference, summed over the
+ * cells (with the first pass's difference where a cell was not split), is
+ * therefore the error estimate *err. */
 static int batch_probs(mcbox_check *c, double *prob, double *err)
 {
     int q = c->o.quad_order, dims = c->spec.dims, cells = c->chart_cells;
-    int per = dims == 2 ? q * q : q, panels = dims == 2 ? 5 : 3; /* the cell, then its parts */
-    size_t total = (size_t)cells * (size_t)panels * (size_t)per;
-    double gx[64], gw[64], gy[64], gv[64];
+    int h = q / 2 > 0 ? q / 2 : 1, parts = dims == 2 ? 4 : 2;
+    size_t full = dims == 2 ? (size_t)q * (size_t)q : (size_t)q;
+    size_t half = dims == 2 ? (size_t)h * (size_t)h : (size_t)h;
+    size_t per1 = full + half, per2 = (size_t)parts * full; /* nodes per cell, per pass */
+    size_t total = (size_t)cells * (per1 > per2 ? per1 : per2);
     double *pts = malloc(total * 3 * sizeof *pts), *jac = malloc(total * sizeof *jac),
-           *vals = malloc(total * sizeof *vals);
+           *vals = calloc(total, sizeof *vals), *check = malloc((size_t)cells * sizeof *check);
+    int *split = malloc((size_t)cells * sizeof *split);
     int status = 0;
-    if (!pts || !jac || !vals) {
+    if (!pts || !jac || !vals || !check || !split) {
         status = -1;
         goto done;
     }
+    /* Pass 1: the two rules on every cell. */
     for (int cell = 0; cell < cells; cell++) {
         double box[4];
         mc_gof_cell_box(&c->spec, cell, box);
-        for (int pa = 0; pa < panels; pa++) {
-            /* Panel 0 is the cell; panel 1 + k its part k (x half k / 2 or
-             * k, y half k % 2). */
-            double b[4] = {box[0], box[1], box[2], box[3]};
-            if (pa > 0) {
-                int hx = dims == 2 ? (pa - 1) / 2 : pa - 1, hy = (pa - 1) % 2;
-                double mx = 0.5 * (box[0] + box[1]), my = 0.5 * (box[2] + box[3]);
-                b[0] = hx ? mx : box[0], b[1] = hx ? box[1] : mx;
-                if (dims == 2)
-                    b[2] = hy ? my : box[2], b[3] = hy ? box[3] : my;
-            }
-            if (mc_quad_gauss_legendre(q, b[0], b[1], gx, gw) != 0 ||
-                (dims == 2 && mc_quad_gauss_legendre(q, b[2], b[3], gy, gv) != 0)) {
-                status = -1;
-                goto done;
-            }
-            for (int k = 0; k < per; k++) {
-                size_t at = ((size_t)cell * (size_t)panels + (size_t)pa) * (size_t)per + (size_t)k;
-                int i = dims == 2 ? k / q : k, j = dims == 2 ? k % q : 0;
-                double p[2] = {gx[i], dims == 2 ? gy[j] : 0.0};
-                double w = gw[i] * (dims == 2 ? gv[j] : 1.0);
-                recorder rec = {pts + at * 3, false};
-                double jv = 0.0;
-                if (!masked(c, p))
-                    jv = cat_chart_density_of(&c->st, p, record_point, &rec);
-                if (!rec.called)
-                    memset(pts + at * 3, 0, 3 * sizeof *pts);
-                jac[at] = rec.called ? w * jv : 0.0;
-            }
+        size_t at = (size_t)cell * per1;
+        if (rule_nodes(c, box, q, pts + at * 3, jac + at) != full ||
+            rule_nodes(c, box, h, pts + (at + full) * 3, jac + at + full) != half) {
+            status = -1;
+            goto done;
         }
     }
-    /* Only the nodes the chart maps to a point are sent. */
-    for (size_t at = 0; at < total; at++)
-        vals[at] = 0.0;
     nodes nd = {pts, jac};
-    if (batch_densities(c, total, node_point, &nd, vals) != 0) {
+    if (batch_densities(c, (size_t)cells * per1, node_point, &nd, vals) != 0) {
         status = -1;
         goto done;
     }
+    int n_split = 0;
     *err = 0.0;
     for (int cell = 0; cell < cells; cell++) {
-        double sum[2] = {0.0, 0.0}; /* the whole cell's rule, its parts' */
-        for (int pa = 0; pa < panels; pa++)
-            for (int k = 0; k < per; k++) {
-                size_t at = ((size_t)cell * (size_t)panels + (size_t)pa) * (size_t)per + (size_t)k;
-                double v = vals[at];
-                /* A negative or non-finite density makes the cell NaN: the
-                 * test then rejects instead of pooling it away. */
-                if (jac[at] != 0.0 && !(v >= 0.0 && isfinite(v)))
-                    sum[pa > 0] = (double)NAN;
-                sum[pa > 0] += jac[at] * v;
+        size_t at = (size_t)cell * per1;
+        prob[cell] = rule_sum(jac, vals, at, full);
+        check[cell] = rule_sum(jac, vals, at + full, half);
+        double d = fabs(prob[cell] - check[cell]);
+        split[cell] = !(d <= 1e-13 + 1e-9 * fabs(prob[cell])); /* NaN: no split, stays NaN */
+        if (isnan(prob[cell]) || isnan(check[cell]))
+            prob[cell] = (double)NAN, split[cell] = 0;
+        if (!split[cell])
+            *err += 3.0 * d;
+        n_split += split[cell];
+    }
+    if (n_split == 0)
+        goto done;
+    /* Pass 2: the full rule on the parts of the cells that disagreed. */
+    size_t at = 0;
+    for (int cell = 0; cell < cells; cell++) {
+        if (!split[cell])
+            continue;
+        double box[4];
+        mc_gof_cell_box(&c->spec, cell, box);
+        for (int pa = 0; pa < parts; pa++, at += full) {
+            /* Part pa: x half pa / 2 (2D) or pa (1D), y half pa % 2. */
+            int hx = dims == 2 ? pa / 2 : pa, hy = pa % 2;
+            double mx = 0.5 * (box[0] + box[1]), my = 0.5 * (box[2] + box[3]);
+            double b[4] = {hx ? mx : box[0], hx ? box[1] : mx, box[2], box[3]};
+            if (dims == 2)
+                b[2] = hy ? my : box[2], b[3] = hy ? box[3] : my;
+            if (rule_nodes(c, b, q, pts + at * 3, jac + at) != full) {
+                status = -1;
+                goto done;
             }
-        prob[cell] = sum[1];
-        *err += 3.0 * fabs(sum[1] - sum[0]);
+        }
+    }
+    for (size_t k = 0; k < at; k++)
+        vals[k] = 0.0;
+    if (batch_densities(c, at, node_point, &nd, vals) != 0) {
+        status = -1;
+        goto done;
+    }
+    at = 0;
+    for (int cell = 0; cell < cells; cell++) {
+        if (!split[cell])
+            continue;
+        double fine = rule_sum(jac, vals, at, per2);
+        at += per2;
+        *err += 3.0 * fabs(fine - prob[cell]);
+        prob[cell] = fine;
     }
 done:
     free(pts);
     free(jac);
     free(vals);
+    free(check);
+    free(split);
     return status;
 }
 

@@ -112,10 +112,10 @@ typedef struct mcbox_sampler {
     double (*pdf)(const double *x, void *ctx);
     /* Alternative to pdf: the densities of n points (x: n * dims doubles)
      * into out[0 .. n). Used when pdf is NULL; then the cells' expected
-     * counts come from a fixed Gauss-Legendre rule (quad_order^2 points on
-     * each quarter of a 2D cell, quad_order on each half of a 1D cell, and
-     * the same rule on the whole cell for an error estimate: see
-     * pdf_integral_error) evaluated in one batch, and the
+     * counts come from fixed Gauss-Legendre rules (quad_order^2 points per
+     * 2D cell, quad_order per 1D cell, checked against the rule of half the
+     * order; a cell where the two disagree is integrated again on its
+     * quarters or halves: see pdf_integral_error) in two batches, and the
      * densities at the samples in batches: for a density behind a pipe, a
      * GPU or another language. Called from one thread. */
     void (*pdf_batch)(const double *x, size_t n, double *out, void *ctx);
@@ -178,11 +178,12 @@ typedef struct mcbox_check_result {
                               point is not the atom's */
     uint64_t bad_pdf;      /* samples where pdf(x) is negative, NaN or infinite */
     double pdf_integral;   /* the density's integral over the domain, plus the atoms' mass */
-    double pdf_integral_error; /* with pdf_batch: the fixed rule's error estimate, 3 times the
-                              sum over cells of |rule on the cell's halves or quarters - rule
-                              on the cell| (enough for a density that jumps, or is singular
-                              no worse than 1/sqrt, inside a cell); allowed on top of
-                              norm_tol. 0 with pdf (adaptive quadrature, 1e-11 relative) */
+    double pdf_integral_error; /* with pdf_batch: the fixed rules' error estimate, 3 times the
+                              sum over cells of the difference of two rules (for a cell split
+                              in quarters or halves, |their rule - the whole cell's|): enough
+                              for a density that jumps, or is singular no worse than
+                              1/sqrt, inside a cell; allowed on top of norm_tol. 0 with pdf
+                              (adaptive quadrature, 1e-11 relative) */
     uint64_t pdf_reported; /* samples that reported their own pdf */
     double pdf_mismatch;   /* largest |reported - pdf(x)| / pdf(x) over them (0 if none) */
     uint64_t weight_reported;

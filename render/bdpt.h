@@ -26,7 +26,7 @@
  *     strategy that would join at one is left out of the sum, and the
  *     densities through it count as 1 in both directions (the deltas
  *     cancel). Two exceptions to the heuristic (see weight_from in
- *     bdpt.c): a path whose light end is reached through a specular
+ *     bdpt_mis.c): a path whose light end is reached through a specular
  *     vertex (the caustic) goes wholly to the joins when one can make it,
  *     not partly to s = 0; a lamp seen directly (two vertices) goes
  *     wholly to s = 0, not partly to the splat (1, 1).
@@ -44,6 +44,9 @@
  * stop as the book's integrator's paths do; the weights, functions of the
  * path alone, still sum to 1 over the strategies.
  */
+/* The implementation is split along the algorithm's seams into
+ * render/bdpt*.c; render/bdpt_internal.h, internal to them, says which
+ * file holds what. */
 #ifndef RT_BDPT_H
 #define RT_BDPT_H
 

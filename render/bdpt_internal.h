@@ -1,0 +1,130 @@
+/* render/bdpt_internal.h - what the files of the bidirectional path tracer
+ * share among themselves (this book's #ch-caustic; Veach's thesis, 1997,
+ * its chapter 10). Internal: only render/bdpt*.c include it, no program or
+ * test does, and `make install` does not ship it; render/bdpt.h is the
+ * contract.
+ *
+ * The module follows the algorithm's seams, one file each:
+ *   bdpt.c       the context, the camera's importance, and rt_bdpt_sample,
+ *                which runs the strategies over the two subpaths;
+ *   bdpt_walk.c  the subpaths: the walk shared by both ends and the start
+ *                of a light subpath on an emitter (Veach 10.2);
+ *   bdpt_mis.c   the densities of a joined path and the power heuristic's
+ *                weights over the strategies (Veach 10.3 and 9.2);
+ *   bdpt_join.c  the joins: a shadow ray between the two subpaths' ends
+ *                (t >= 2) and the splat of a light subpath's end onto the
+ *                film (t = 1);
+ *   bdpt_seen.c  the families only the camera side can make, estimated
+ *                apart: the lamp seen directly or through glass and
+ *                mirrors (E S* L), the caustic through the sphere
+ *                (E S+ D S+ L).
+ */
+#ifndef RT_BDPT_INTERNAL_H
+#define RT_BDPT_INTERNAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "render/bdpt.h"
+
+/* The unit direction from the camera to p (*dir) and its cosine with the
+ * view axis (*cos_theta); false behind the camera. */
+static inline bool rt_bdpt_camera_dir(const rt_bdpt_ctx *c, vec3 p, vec3 *dir, double *cos_theta)
+{
+    *dir = vec3_normalize(vec3_sub(p, c->camera->origin));
+    *cos_theta = vec3_dot(*dir, c->forward);
+    return *cos_theta > 0.0;
+}
+
+/* --- the subpaths (bdpt_walk.c) --------------------------------------- */
+
+/* Continues a subpath along r from its last vertex v[n - 1] with weight
+ * beta, appending a vertex per hit to v, until max_n vertices, a miss or
+ * absorption; `segment` is the sampler's segment of the first hit. Adds
+ * the rays traced to *segments. Returns the vertex count. */
+int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, int n, int max_n,
+                 int segment, rt_sampler *sampler, uint64_t *segments);
+
+/* The light subpath into v: at most max_n vertices (0 without emitters),
+ * its draws from the sampler's segments past the camera subpath's
+ * (max_depth + 1 on). Returns the vertex count. */
+int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex *v, int max_n,
+                       uint64_t *segments);
+
+/* --- densities and weights (bdpt_mis.c) ------------------------------- */
+
+/* The density per unit area with which a light subpath starts at x:
+ * 1 / (emitters x area) on the emitting side of an emitter, else 0. */
+double rt_bdpt_origin_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x);
+
+/* The densities of the two subpaths that do not depend on how they are
+ * joined (a Lambertian vertex's density does not depend on the direction
+ * the path arrived from), remapped: lf[i], lr[i] are pl and pc of light
+ * vertex i within its subpath (pc from vertex i + 1), cf[j], cr[j] pc and
+ * pl of camera vertex j (pl from vertex j + 1); jl, jc whether the vertex
+ * can be joined. pl and pc as in rt_bdpt_mis_weight. */
+typedef struct rt_bdpt_subpath_pdfs {
+    double lf[RT_BDPT_MAX_DEPTH], lr[RT_BDPT_MAX_DEPTH];
+    double cf[RT_BDPT_MAX_DEPTH + 1], cr[RT_BDPT_MAX_DEPTH + 1];
+    bool jl[RT_BDPT_MAX_DEPTH], jc[RT_BDPT_MAX_DEPTH + 1];
+} rt_bdpt_subpath_pdfs;
+
+/* Fills *sp for the light subpath light[0..nl) and the camera subpath
+ * cam[0..nc). */
+void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int nl,
+                        const rt_bdpt_vertex *cam, int nc, rt_bdpt_subpath_pdfs *sp);
+
+/* rt_bdpt_mis_weight of strategy (s, t), the path light[0..s) joined to
+ * cam[0..t) reversed, from the cached densities sp and the few that the
+ * join changes: in O(s + t). */
+double rt_bdpt_join_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
+                           const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t);
+
+/* --- the joins (bdpt_join.c) ------------------------------------------ */
+
+/* The contribution of strategy (s, t) with t >= 2 (s = 0: the camera
+ * subpath's own hit on an emitter), weighted by the cached densities sp
+ * (NULL: unweighted), with roulette on its shadow ray when aux is given
+ * (RT_BDPT_JOIN_FLOOR). Adds the rays traced to *segments. */
+vec3 rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt_bdpt_vertex *light,
+                  int s, const rt_bdpt_vertex *cam, int t, mc_rng *aux, uint64_t *segments);
+
+/* Strategy (s, 1), s >= 1: the light subpath's end seen by the camera
+ * vertex cam0, times the camera importance (and the weight from sp, NULL:
+ * unweighted), added to splat[3 j .. 3 j + 3) of the pixel j it is seen
+ * in; roulette on the shadow ray when aux is given. Adds the rays traced
+ * to *segments. */
+void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s,
+                             const rt_bdpt_vertex *cam0, const rt_bdpt_subpath_pdfs *sp,
+                             mc_rng *aux, double *splat, uint64_t *segments);
+
+/* --- the families estimated apart (bdpt_seen.c) ----------------------- */
+
+/* The index jd of the Lambertian vertex D of the camera subpath
+ * cam[0..nc) that follows one or more glass or mirror vertices right
+ * after the camera (camera, glass, glass, D: the floor seen through the
+ * sphere), or 0 if it has none. */
+int rt_bdpt_through_vertex(const rt_bdpt_vertex *cam, int nc);
+
+/* Whether the path of s = 0 that ends at camera vertex t - 1 (an emitter)
+ * is one the weighted render estimates apart: E S* L (the vertices
+ * between the camera and the emitter are all glass or mirrors), or
+ * E S+ D S+ L with D = cam[jd] (rt_bdpt_through_vertex; jd = 0 for none).
+ * The negative-control hooks of ps (ps->neg) keep them in. */
+bool rt_bdpt_estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t, int jd);
+
+/* The paths E S+ D S+ L through the Lambertian vertex D = d = cam[jd]:
+ * the mean over RT_BDPT_THROUGH_RAYS cosine-sampled directions at D of
+ * what comes back through glass and mirrors, times the subpath's weight
+ * up to D; the draws come from aux. Adds the rays traced to *segments. */
+vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int jd, mc_rng *aux,
+                              uint64_t *segments);
+
+/* rt_bdpt_seen_emission of the camera ray r from its first hit, which the
+ * camera subpath cam[0..nc) has found already (vertex 1; none when r met
+ * nothing): the same term without tracing r again, within depth
+ * segments. */
+vec3 rt_bdpt_seen_first(const rt_bdpt_ctx *c, rt_ray r, const rt_bdpt_vertex *cam, int nc,
+                        int depth, mc_rng *aux, uint64_t *segments);
+
+#endif /* RT_BDPT_INTERNAL_H */

@@ -1,0 +1,216 @@
+/* render/bdpt_mis.c - the densities with which each strategy makes a
+ * joined path, and the power heuristic's weights over the strategies
+ * (Veach's thesis, 1997, 10.3 and 9.2; this book's #ch-caustic). */
+#include <math.h>
+
+#include "mc/constants.h"
+#include "render/bdpt_internal.h"
+#include "render/lights.h"
+
+/* --- densities of the joined path ------------------------------------- */
+
+static double emitter_area(const rt_prim *e)
+{
+    if (e->kind == RT_PRIM_QUAD)
+        return vec3_length(vec3_cross(e->as.quad.u, e->as.quad.v));
+    return 4.0 * MC_PI * e->as.sphere.radius * e->as.sphere.radius;
+}
+
+double rt_bdpt_origin_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x)
+{
+    if (x->emitter < 0 || (x->kind == RT_BDPT_SURFACE && !x->front_face))
+        return 0.0;
+    const rt_prim *e = &rt_scene_emitter_prims(c->scene)[x->emitter];
+    return 1.0 / ((double)rt_scene_emitter_count(c->scene) * emitter_area(e));
+}
+
+/* Whether x is a vertex a shadow ray may join (i its place in a path of
+ * n vertices): the camera, the start of a light subpath, a Lambertian
+ * surface. */
+static bool joinable(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int i, int n)
+{
+    if (i == n - 1)
+        return true;
+    if (i == 0)
+        return rt_bdpt_origin_pdf(c, x) > 0.0;
+    return !x->delta && x->m && x->m->kind == RT_MAT_LAMBERT;
+}
+
+/* Which walk makes the next vertex from a vertex: a subpath's own
+ * (cosine sampling at a Lambertian surface, from either end) or the
+ * start of a light subpath (cosine emission). */
+typedef enum role { AS_LIGHT, AS_CAMERA, AS_ORIGIN } role;
+
+/* The density per unit solid angle with which `from` sends its next ray
+ * toward `to` in role r: the film's for the camera, cosine emission from
+ * the start of a light subpath, a Lambertian surface's sampling density;
+ * 0 through a specular vertex (the caller counts that as 1). */
+static double dir_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r, vec3 to)
+{
+    if (from->kind == RT_BDPT_CAMERA) {
+        vec3 dir;
+        double cos_theta;
+        if (!rt_bdpt_camera_dir(c, to, &dir, &cos_theta))
+            return 0.0;
+        double film = c->pixel_area * (double)c->camera->width * (double)c->camera->height;
+        return 1.0 / (film * cos_theta * cos_theta * cos_theta);
+    }
+    vec3 dir = vec3_normalize(vec3_sub(to, from->p));
+    if (r == AS_ORIGIN || from->kind == RT_BDPT_LIGHT) {
+        double cos_e = vec3_dot(from->kind == RT_BDPT_LIGHT ? from->ng : from->ns, dir);
+        return cos_e > 0.0 ? cos_e * MC_INV_PI : 0.0;
+    }
+    if (from->delta || !from->m || from->m->kind != RT_MAT_LAMBERT)
+        return 0.0;
+    return rt_cosine_value(from->ns, dir);
+}
+
+/* A density per unit solid angle at `from` as a density per unit area at
+ * `to`: times |cos| at `to` over the squared distance. */
+static double to_area(double pdf_dir, vec3 from, const rt_bdpt_vertex *to)
+{
+    vec3 d = vec3_sub(to->p, from);
+    double dist_sq = vec3_length_sq(d);
+    return pdf_dir * fabs(vec3_dot(to->ng, d)) / (sqrt(dist_sq) * dist_sq);
+}
+
+/* A zero density, which only a specular neighbour leaves (any path with a
+ * real zero contributes nothing), counts as 1: the deltas of the two
+ * directions cancel in every ratio (Veach 10.3.5). */
+static double remap0(double p) { return p != 0.0 ? p : 1.0; }
+
+/* The power heuristic's weight of strategy s from the densities of the
+ * joined path of n vertices: pl[i], pc[i] as in rt_bdpt_mis_weight
+ * (remapped), ok[r] whether strategy r can join. Strategy r + 1 differs
+ * from r in making x[r] from the light side, so p_{r+1} / p_r =
+ * pl[r] / pc[r]; the weight is 1 / sum_r (p_r / p_s)^2, in O(n). */
+/* BEGIN SNIPPET bdpt_weight */
+static double weight_from(const double *pl, const double *pc, bool *ok, int n, int s, int twice,
+                          bool x1_specular)
+{
+    /* Light reached through a specular vertex right after the camera
+     * subpath's last diffuse bounce (the caustic under the glass sphere):
+     * with the deltas counted as 1 the densities of s = 0 and of the joins
+     * are not comparable, and the power heuristic would give the rare
+     * camera path that finds the lamp through the glass a sizeable weight,
+     * i.e. fireflies. Any weights that are functions of the path and sum
+     * to 1 over the strategies that can make it keep the sum unbiased
+     * (Veach 9.2): such a path goes to the joins alone when there is one. */
+    if (x1_specular && ok[0])
+        for (int r = 1; r < n; r++)
+            if (ok[r]) {
+                ok[0] = false;
+                break;
+            }
+    /* The other way round for an emitter the camera sees directly (n = 2):
+     * the camera ray finds it every time, each pixel sample adding its
+     * exact radiance, while a light subpath's start lands in a random
+     * pixel; the densities, which say nothing of that, favour the splats
+     * because there are more light starts on the lamp than camera rays.
+     * Such a path goes to s = 0 alone. */
+    if (n == 2 && ok[0])
+        ok[1] = false;
+    if (!ok[s])
+        return 0.0;
+    double sum = s == twice ? 2.0 : 1.0, ratio = 1.0;
+    for (int r = s + 1; r < n; r++) {
+        ratio *= pl[r - 1] / pc[r - 1];
+        if (ok[r])
+            sum += ratio * ratio * (r == twice ? 2.0 : 1.0);
+    }
+    ratio = 1.0;
+    for (int r = s - 1; r >= 0; r--) {
+        ratio *= pc[r] / pl[r];
+        if (ok[r])
+            sum += ratio * ratio * (r == twice ? 2.0 : 1.0);
+    }
+    return 1.0 / sum;
+}
+/* END SNIPPET bdpt_weight */
+
+double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, int s)
+{
+    double pl[RT_BDPT_MAX_DEPTH + 2], pc[RT_BDPT_MAX_DEPTH + 2];
+    bool ok[RT_BDPT_MAX_DEPTH + 2];
+    /* pl[i]: the density of x[i] as the light subpath's walk would make
+     * it from x[i-1] (and x[0] as its start); pc[i]: as the camera's would
+     * from x[i+1]. Per unit area. */
+    pl[0] = remap0(rt_bdpt_origin_pdf(c, x));
+    for (int i = 1; i < n; i++)
+        pl[i] = remap0(to_area(dir_pdf(c, &x[i - 1], i == 1 ? AS_ORIGIN : AS_LIGHT, x[i].p),
+                               x[i - 1].p, &x[i]));
+    for (int i = n - 2; i >= 0; i--)
+        pc[i] = remap0(to_area(dir_pdf(c, &x[i + 1], AS_CAMERA, x[i].p), x[i + 1].p, &x[i]));
+    pc[n - 1] = 1.0;
+    /* Strategy r joins x[r-1] and x[r] (r = 0: the camera subpath ends on
+     * the emitter). */
+    ok[0] = rt_bdpt_origin_pdf(c, &x[0]) > 0.0;
+    for (int r = 1; r < n; r++)
+        ok[r] = joinable(c, &x[r - 1], r - 1, n) && joinable(c, &x[r], r, n);
+    return weight_from(pl, pc, ok, n, s, c->ps->neg.mis_double - 1, n > 2 && x[1].delta);
+}
+
+/* --- the weights of the joins, from densities cached per subpath ------ */
+
+/* The density of `to` made from `from` in role r, per unit area,
+ * remapped. */
+static double area_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r,
+                       const rt_bdpt_vertex *to)
+{
+    return remap0(to_area(dir_pdf(c, from, r, to->p), from->p, to));
+}
+
+void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int nl,
+                        const rt_bdpt_vertex *cam, int nc, rt_bdpt_subpath_pdfs *sp)
+{
+    for (int i = 0; i < nl; i++) {
+        sp->lf[i] = i == 0 ? remap0(rt_bdpt_origin_pdf(c, &light[0]))
+                           : area_pdf(c, &light[i - 1], i == 1 ? AS_ORIGIN : AS_LIGHT, &light[i]);
+        sp->lr[i] = i + 1 < nl ? area_pdf(c, &light[i + 1], AS_CAMERA, &light[i]) : 1.0;
+        sp->jl[i] = i == 0 || joinable(c, &light[i], i, i + 2);
+    }
+    for (int j = 0; j < nc; j++) {
+        sp->cf[j] = j == 0 ? 1.0 : area_pdf(c, &cam[j - 1], AS_CAMERA, &cam[j]);
+        sp->cr[j] = j + 1 < nc ? area_pdf(c, &cam[j + 1], AS_LIGHT, &cam[j]) : 1.0;
+        sp->jc[j] = j == 0 || joinable(c, &cam[j], 1, 3);
+    }
+}
+
+/* The path is light[0..s) then cam[0..t) reversed: x[i] = light[i] for
+ * i < s, x[i] = cam[n - 1 - i] after. Only the densities at the two ends
+ * of the join are not in the cache. */
+double rt_bdpt_join_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
+                           const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t)
+{
+    int n = s + t;
+    double pl[RT_BDPT_MAX_DEPTH + 2], pc[RT_BDPT_MAX_DEPTH + 2];
+    bool ok[RT_BDPT_MAX_DEPTH + 2], jn[RT_BDPT_MAX_DEPTH + 2];
+    const rt_bdpt_vertex *z = &cam[t - 1];
+    for (int i = 0; i < s; i++) {
+        pl[i] = sp->lf[i];
+        pc[i] = sp->lr[i];
+        jn[i] = sp->jl[i];
+    }
+    for (int i = s; i < n; i++) {
+        int j = n - 1 - i; /* x[i] is camera vertex j */
+        pc[i] = sp->cf[j];
+        pl[i] = sp->cr[j];
+        jn[i] = sp->jc[j];
+    }
+    if (s == 0) {
+        pl[0] = remap0(rt_bdpt_origin_pdf(c, z));
+        jn[0] = rt_bdpt_origin_pdf(c, z) > 0.0;
+        pl[1] = area_pdf(c, z, AS_ORIGIN, &cam[t - 2]);
+    } else {
+        const rt_bdpt_vertex *y = &light[s - 1];
+        pl[s] = area_pdf(c, y, s == 1 ? AS_ORIGIN : AS_LIGHT, z);
+        pc[s - 1] = area_pdf(c, z, AS_CAMERA, y);
+    }
+    ok[0] = jn[0] && (s > 0 || rt_bdpt_origin_pdf(c, z) > 0.0);
+    for (int r = 1; r < n; r++)
+        ok[r] = jn[r - 1] && jn[r];
+    /* x[1]: the second light vertex, the camera subpath's last, or the
+     * one before it. */
+    const rt_bdpt_vertex *x1 = s >= 2 ? &light[1] : s == 1 ? z : &cam[t - 2];
+    return weight_from(pl, pc, ok, n, s, c->ps->neg.mis_double - 1, n > 2 && x1->delta);
+}

@@ -1,0 +1,197 @@
+/* render/bdpt_seen.c - the paths only the camera side can make, each
+ * estimated apart from the strategies: the lamp seen directly or through
+ * glass and mirrors (E S* L) and the caustic seen through the sphere
+ * (E S+ D S+ L); render/bdpt.h says why, this book's #ch-caustic how. */
+#include <math.h>
+
+#include "mc/onb.h"
+#include "render/bdpt_internal.h"
+#include "render/jitter.h"
+#include "render/lights.h"
+
+/* --- which paths are estimated apart ---------------------------------- */
+
+/* The vertices a chain of rt_bdpt_seen_emission goes on through: glass
+ * and perfect mirrors. */
+static bool chain_material(const rt_material *m)
+{
+    return m && (m->kind == RT_MAT_DIELECTRIC || (m->kind == RT_MAT_METAL && m->fuzz == 0.0));
+}
+
+/* Whether the camera vertices cam[from..to) are all glass or perfect
+ * mirrors. */
+static bool all_chain(const rt_bdpt_vertex *cam, int from, int to)
+{
+    for (int j = from; j < to; j++)
+        if (!chain_material(cam[j].m))
+            return false;
+    return true;
+}
+
+int rt_bdpt_through_vertex(const rt_bdpt_vertex *cam, int nc)
+{
+    int j = 1;
+    while (j < nc && chain_material(cam[j].m))
+        j++;
+    return j >= 2 && j < nc && cam[j].m && cam[j].m->kind == RT_MAT_LAMBERT ? j : 0;
+}
+
+bool rt_bdpt_estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t, int jd)
+{
+    if (all_chain(cam, 1, t - 1))
+        return !ps->neg.seen_twice;
+    return jd > 0 && t - 1 >= jd + 2 && all_chain(cam, jd + 1, t - 1) && !ps->neg.through_twice;
+}
+
+/* --- E S* L: the lamp seen directly or through glass and mirrors ------ */
+
+/* BEGIN SNIPPET bdpt_seen */
+static vec3 seen(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, mc_rng *rng,
+                 uint64_t *segments);
+
+/* What comes back to the ray r that met the glass or mirror m at h, with
+ * `left` segments (this one included) and `splits` splits to go: the
+ * albedo times seen() along the reflection, or at glass along both
+ * branches weighted by R and 1 - R, or along one drawn with those
+ * probabilities once the splits are spent. */
+static vec3 through_chain_vertex(const rt_bdpt_ctx *c, rt_ray r, const rt_hit *h,
+                                 const rt_material *m, int left, int splits, mc_rng *rng,
+                                 uint64_t *segments)
+{
+    vec3 more;
+    if (m->kind == RT_MAT_METAL) {
+        more = seen(c, rt_ray_make(h->p, rt_reflect(r.dir, h->normal)), left - 1, splits, rng, segments);
+    } else {
+        rt_ray refl, refr;
+        double R = rt_glass_branches(m, &r, h, &refl, &refr);
+        if (R >= 1.0)
+            more = seen(c, refl, left - 1, splits, rng, segments);
+        else if (splits > 0)
+            more = vec3_add(vec3_scale(seen(c, refl, left - 1, splits - 1, rng, segments), R),
+                            vec3_scale(seen(c, refr, left - 1, splits - 1, rng, segments), 1.0 - R));
+        else
+            more = seen(c, mc_rng_uniform(rng) < R ? refl : refr, left - 1, 0, rng, segments);
+    }
+    return vec3_mul(m->albedo, more);
+}
+
+/* rt_bdpt_seen_emission with `left` segments and `splits` splits to go;
+ * through_only: only what comes through a glass or mirror vertex first
+ * (the emitter met first is left out). */
+static vec3 seen_any(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, bool through_only,
+                     mc_rng *rng, uint64_t *segments)
+{
+    vec3 zero = vec3_make(0.0, 0.0, 0.0);
+    rt_hit h;
+    if (left < 1)
+        return zero;
+    ++*segments;
+    if (!rt_scene_hit(c->scene, r, HUGE_VAL, &h))
+        return zero;
+    const rt_material *m = rt_scene_material(c->scene, h.material);
+    vec3 e = through_only ? zero : rt_material_emitted(m, &h);
+    if (!chain_material(m))
+        return e;
+    return vec3_add(e, through_chain_vertex(c, r, &h, m, left, splits, rng, segments));
+}
+
+static vec3 seen(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, mc_rng *rng,
+                 uint64_t *segments)
+{
+    return seen_any(c, r, left, splits, false, rng, segments);
+}
+/* END SNIPPET bdpt_seen */
+
+vec3 rt_bdpt_seen_first(const rt_bdpt_ctx *c, rt_ray r, const rt_bdpt_vertex *cam, int nc,
+                        int depth, mc_rng *aux, uint64_t *segments)
+{
+    /* seen_any's terms at the hit cam[1], rebuilt from the vertex
+     * instead of tracing r a second time. */
+    if (nc < 2)
+        return vec3_make(0.0, 0.0, 0.0);
+    const rt_bdpt_vertex *x = &cam[1];
+    rt_hit h = {.p = x->p, .normal = x->ns, .front_face = x->front_face};
+    vec3 e = rt_material_emitted(x->m, &h);
+    if (!chain_material(x->m))
+        return e;
+    return vec3_add(e, through_chain_vertex(c, r, &h, x->m, depth, RT_BDPT_SPLITS, aux, segments));
+}
+
+/* The longest subpath of a render. */
+static int max_segments(const rt_bdpt_ctx *c)
+{
+    return c->ps->max_depth < RT_BDPT_MAX_DEPTH ? c->ps->max_depth : RT_BDPT_MAX_DEPTH;
+}
+
+vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t *segments)
+{
+    return seen(c, r, max_segments(c), RT_BDPT_SPLITS, rng, segments);
+}
+
+/* --- E S+ D S+ L: the caustic seen through the sphere ----------------- */
+
+/* Cosine sampling at the Lambertian D: BRDF x cos / density is the
+ * albedo, whatever the direction. */
+/* BEGIN SNIPPET bdpt_through */
+vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int jd, mc_rng *aux,
+                              uint64_t *segments)
+{
+    vec3 sum = vec3_make(0.0, 0.0, 0.0);
+    onb frame = onb_from_w(d->ns);
+    for (int i = 0; i < RT_BDPT_THROUGH_RAYS; i++) {
+        double u1 = mc_rng_uniform(aux), u2 = mc_rng_uniform(aux);
+        rt_ray r = rt_ray_make(d->p, pdf_cosine_direction(&frame, u1, u2));
+        sum = vec3_add(sum, seen_any(c, r, max_segments(c) - jd, RT_BDPT_SPLITS, true, aux, segments));
+    }
+    return vec3_scale(vec3_mul(vec3_mul(d->beta, d->m->albedo), sum), 1.0 / RT_BDPT_THROUGH_RAYS);
+}
+/* END SNIPPET bdpt_through */
+
+/* --- the lamp's edges: more camera rays where the term changes -------- */
+
+/* The streams of the terms: one per pixel for the edge test, one per
+ * pixel sample (keys apart from the pixels' own streams, which are
+ * mc_rng_derive(seed, pixel)). */
+#define SEEN_EDGE_KEY 0x5ee9ed9e5ee9ed9eull
+#define SEEN_SAMPLE_KEY 0x5ee95a3b1e5ee95aull
+
+mc_rng rt_bdpt_aux_stream(uint64_t seed, uint64_t sample)
+{
+    return mc_rng_derive(seed ^ SEEN_SAMPLE_KEY, sample);
+}
+
+bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64_t *segments)
+{
+    const rt_camera *cam = c->camera;
+    mc_rng rng = mc_rng_derive(seed ^ SEEN_EDGE_KEY, (uint64_t)y * (uint64_t)cam->width + (uint64_t)x);
+    vec3 lo = vec3_make(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi = vec3_scale(lo, -1.0);
+    for (int j = 0; j <= 2; j++)
+        for (int i = 0; i <= 2; i++) {
+            /* The far corners are inside the pixel by an ulp's worth. */
+            double px = fmin((double)x + 0.5 * i, nextafter((double)x + 1.0, 0.0));
+            double py = fmin((double)y + 0.5 * j, nextafter((double)y + 1.0, 0.0));
+            vec3 v = rt_bdpt_seen_emission(c, rt_camera_ray(cam, px, py), &rng, segments);
+            lo = vec3_make(fmin(lo.x, v.x), fmin(lo.y, v.y), fmin(lo.z, v.z));
+            hi = vec3_make(fmax(hi.x, v.x), fmax(hi.y, v.y), fmax(hi.z, v.z));
+        }
+    return hi.x - lo.x > 0.01 || hi.y - lo.y > 0.01 || hi.z - lo.z > 0.01;
+}
+
+/* BEGIN SNIPPET bdpt_seen_sample */
+vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, mc_rng *aux, uint64_t *segments)
+{
+    /* One jittered ray in each cell of a g x g grid: the mean over the
+     * cells of stratified points, unbiased for the pixel's mean. */
+    enum { g = 8 };
+    _Static_assert(g * g == RT_BDPT_EDGE_SUBSAMPLES, "the grid is RT_BDPT_EDGE_SUBSAMPLES cells");
+    vec3 sum = vec3_make(0.0, 0.0, 0.0);
+    for (int j = 0; j < g; j++)
+        for (int i = 0; i < g; i++) {
+            double u1 = mc_rng_uniform(aux), u2 = mc_rng_uniform(aux);
+            rt_ray sub = rt_camera_ray(c->camera, (double)x + rt_jitter_in_cell((uint64_t)i, g, u1),
+                                       (double)y + rt_jitter_in_cell((uint64_t)j, g, u2));
+            sum = vec3_add(sum, rt_bdpt_seen_emission(c, sub, aux, segments));
+        }
+    return vec3_scale(sum, 1.0 / (g * g));
+}
+/* END SNIPPET bdpt_seen_sample */

@@ -1,0 +1,128 @@
+/* render/bdpt_walk.c - the two subpaths: the walk that both ends share
+ * (the materials' own sampling, cosine sampling at Lambertian surfaces,
+ * Russian roulette) and the start of a light subpath on an emitter
+ * (Veach's thesis, 1997, 10.2; this book's #ch-caustic). */
+#include <math.h>
+
+#include "mc/constants.h"
+#include "mc/onb.h"
+#include "render/bdpt_internal.h"
+#include "render/lights.h"
+#include "samplers/sphere.h"
+
+static bool same_vec(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/* The emitter whose primitive is the world primitive `prim` (the same
+ * numbers: both are flattened from the same node), or -1. */
+static int emitter_of(const rt_scene *s, int prim)
+{
+    if (prim < 0)
+        return -1;
+    const rt_prim *p = &rt_scene_prims(s)[prim];
+    const rt_prim *e = rt_scene_emitter_prims(s);
+    for (int i = 0; i < rt_scene_emitter_count(s); i++) {
+        if (p->kind != e[i].kind || p->material != e[i].material)
+            continue;
+        if (p->kind == RT_PRIM_QUAD ? same_vec(p->as.quad.q, e[i].as.quad.q) &&
+                                          same_vec(p->as.quad.u, e[i].as.quad.u) &&
+                                          same_vec(p->as.quad.v, e[i].as.quad.v)
+                                    : same_vec(p->as.sphere.center, e[i].as.sphere.center) &&
+                                          p->as.sphere.radius == e[i].as.sphere.radius &&
+                                          p->as.sphere.orient == e[i].as.sphere.orient)
+            return i;
+    }
+    return -1;
+}
+
+/* --- both ends: the materials' sampling, one vertex per hit ---------- */
+
+int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, int n, int max_n,
+                 int segment, rt_sampler *sampler, uint64_t *segments)
+{
+    const rt_scene *s = c->scene;
+    const rt_path_settings *ps = c->ps;
+    vec3 start = beta;
+    for (int k = 0; n < max_n; k++) {
+        rt_hit h;
+        ++*segments;
+        if (!rt_scene_hit(s, r, HUGE_VAL, &h))
+            break;
+        const rt_material *m = rt_scene_material(s, h.material);
+        rt_bdpt_vertex *x = &v[n++];
+        *x = (rt_bdpt_vertex){RT_BDPT_SURFACE, h.p, h.normal, h.normal, h.front_face, false, m,
+                              emitter_of(s, h.prim), beta};
+        if (n == max_n)
+            break;
+        rt_scatter sr;
+        rt_sampler_segment(sampler, segment++);
+        if (!rt_material_scatter(m, &r, &h, sampler, &sr))
+            break;
+        if (sr.specular) {
+            x->delta = true;
+            beta = vec3_mul(beta, sr.attenuation);
+            r = sr.ray;
+            continue;
+        }
+        vec3 dir = rt_cosine_generate(sr.normal, sampler);
+        double sp = rt_material_scattering_pdf(m, &h, dir), pd = rt_cosine_value(sr.normal, dir);
+        if (!(sp > 0.0 && pd > 0.0))
+            break;
+        beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp / pd);
+        r = rt_ray_make(h.p, dir);
+        /* Russian roulette as in render/integrator.c, on the throughput
+         * since the subpath's start: it changes how often a subpath goes
+         * on, not what it estimates, and the MIS weights (functions of the
+         * path alone) still sum to 1. It starts after RT_BDPT_RR_START
+         * segments, not the path tracer's rr_start. */
+        if (ps->russian_roulette && k + 1 >= RT_BDPT_RR_START) {
+            double q = fmax(beta.x / start.x, fmax(beta.y / start.y, beta.z / start.z));
+            q = q < 0.95 ? q : 0.95;
+            if (!(q > 0.0) || rt_sampler_1d(sampler) >= q)
+                break;
+            beta = vec3_scale(beta, 1.0 / q);
+        }
+    }
+    return n;
+}
+
+/* --- the light end: a point on an emitter, then cosine emission ------ */
+
+int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex *v, int max_n,
+                       uint64_t *segments)
+{
+    const rt_scene *s = c->scene;
+    int ne = rt_scene_emitter_count(s);
+    if (ne == 0 || max_n < 1)
+        return 0;
+    rt_sampler_segment(sampler, c->ps->max_depth + 1);
+    int i = (int)rt_sampler_index(sampler, (uint32_t)ne);
+    const rt_prim *e = &rt_scene_emitter_prims(s)[i];
+    double u1, u2;
+    rt_sampler_2d(sampler, &u1, &u2);
+    vec3 p, n;
+    if (e->kind == RT_PRIM_QUAD) {
+        const rt_quad *q = &e->as.quad;
+        p = vec3_add(q->q, vec3_add(vec3_scale(q->u, u1), vec3_scale(q->v, u2)));
+        n = q->normal;
+    } else {
+        const rt_sphere *sp = &e->as.sphere;
+        vec3 d = smp_uniform_sphere_sample(u1, u2);
+        p = vec3_madd(sp->center, d, sp->radius);
+        n = vec3_scale(d, sp->orient);
+    }
+    const rt_material *m = rt_scene_material(s, e->material);
+    rt_bdpt_vertex y0 = {RT_BDPT_LIGHT, p, n, n, true, false, m, i, vec3_make(0.0, 0.0, 0.0)};
+    y0.beta = vec3_scale(m->emission, 1.0 / rt_bdpt_origin_pdf(c, &y0));
+    v[0] = y0;
+    if (max_n == 1)
+        return 1;
+    /* Cosine-weighted emission: radiance Le times cos over the density
+     * cos / pi is Le pi. */
+    rt_sampler_2d(sampler, &u1, &u2);
+    onb frame = onb_from_w(n);
+    vec3 dir = pdf_cosine_direction(&frame, u1, u2);
+    if (!(vec3_dot(dir, n) > 0.0))
+        return 1;
+    return rt_bdpt_walk(c, rt_ray_make(p, dir), vec3_scale(y0.beta, MC_PI), v, 1, max_n,
+                        c->ps->max_depth + 2, sampler, segments);
+}
