@@ -618,10 +618,10 @@ static int batch_probs(mcbox_check *c, double *prob, double *err)
     size_t per1 = full + half, per2 = (size_t)parts * full; /* nodes per cell, per pass */
     size_t total = (size_t)cells * (per1 > per2 ? per1 : per2);
     double *pts = malloc(total * 3 * sizeof *pts), *jac = malloc(total * sizeof *jac),
-           *vals = calloc(total, sizeof *vals), *check = malloc((size_t)cells * sizeof *check);
+           *vals = calloc(total, sizeof *vals);
     int *split = malloc((size_t)cells * sizeof *split);
     int status = 0;
-    if (!pts || !jac || !vals || !check || !split) {
+    if (!pts || !jac || !vals || !split) {
         status = -1;
         goto done;
     }
@@ -645,12 +645,14 @@ static int batch_probs(mcbox_check *c, double *prob, double *err)
     *err = 0.0;
     for (int cell = 0; cell < cells; cell++) {
         size_t at = (size_t)cell * per1;
+        double check = rule_sum(jac, vals, at + full, half);
         prob[cell] = rule_sum(jac, vals, at, full);
-        check[cell] = rule_sum(jac, vals, at + full, half);
-        double d = fabs(prob[cell] - check[cell]);
-        split[cell] = !(d <= 1e-13 + 1e-9 * fabs(prob[cell])); /* NaN: no split, stays NaN */
-        if (isnan(prob[cell]) || isnan(check[cell]))
-            prob[cell] = (double)NAN, split[cell] = 0;
+        double d = fabs(prob[cell] - check);
+        /* A bad density (NaN sum) is not split: the cell stays NaN. */
+        bool bad = isnan(prob[cell]) || isnan(check);
+        if (bad)
+            prob[cell] = (double)NAN;
+        split[cell] = !bad && !(d <= 1e-13 + 1e-9 * fabs(prob[cell]));
         if (!split[cell])
             *err += 3.0 * d;
         n_split += split[cell];
@@ -696,7 +698,6 @@ done:
     free(pts);
     free(jac);
     free(vals);
-    free(check);
     free(split);
     return status;
 }
