@@ -131,8 +131,11 @@ static void check_memory(const options *o)
 {
     double pixels = (double)o->width * (double)o->width;
     double need = pixels * (double)(sizeof(rt_pixel) + sizeof(mc_rng) + 3) + 64e6;
-    if (strategy_splats(o))
-        need += pixels * 3.0 * sizeof(double) * RT_SPLAT_BUFFERS;
+    if (strategy_splats(o)) { /* a set of exact sums per thread (render/splat.h) */
+        int sums = app_threads_used(o->threads);
+        sums = sums < RT_SPLAT_BUFFERS ? sums : RT_SPLAT_BUFFERS;
+        need += pixels * 3.0 * sizeof(rt_splat_sum) * sums;
+    }
     double have = (double)sysconf(_SC_PHYS_PAGES) * (double)sysconf(_SC_PAGE_SIZE);
     struct rlimit rl;
     if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (double)rl.rlim_cur < have)
@@ -210,18 +213,26 @@ static void on_row(void *ctx, const rt_progress *p)
         show_progress(w->clock, p);
 }
 
-/* The ranks' counts summed, the rows gathered on rank 0; the returned
- * signal stopped some rank (0: none). */
-static int combine(app_mpi *mpi, rt_image *img, rt_render_stats *st)
+/* The ranks' counts summed, the rows gathered on rank 0 and, for the
+ * strategies that splat, the splat sums added there and divided by every
+ * rank's light paths together (the sums are exact, so neither the order
+ * nor the split of the rows shows in the bits); the returned signal
+ * stopped some rank (0: none). */
+static int combine(app_mpi *mpi, rt_image *img, rt_splats *splats, rt_render_stats *st)
 {
     int sig = app_mpi_settle_stop(mpi, &interrupted);
     uint64_t sums[4] = {st->paths, st->segments, st->dropped, st->cancelled};
     app_mpi_sum_u64(mpi, sums, 4);
     *st = (rt_render_stats){sums[0], sums[1], sums[2], st->seconds, sums[3] > 0};
-    if (!app_mpi_gather_rows(mpi, img->px, sizeof(rt_pixel) * (size_t)img->width, img->height)) {
+    size_t n = 3 * (size_t)img->width * (size_t)img->height;
+    _Static_assert(sizeof(rt_splat_sum) == 2 * sizeof(uint64_t), "a sum is two words, low first");
+    if (!app_mpi_gather_rows(mpi, img->px, sizeof(rt_pixel) * (size_t)img->width, img->height) ||
+        (splats && !app_mpi_sum_u128(mpi, (uint64_t *)(void *)splats->sum, n))) {
         fprintf(stderr, "%s: rank %d: gathering the image failed\n", prog, mpi->rank);
         exit(1);
     }
+    if (splats && mpi->rank == 0) /* every pixel sample traced one light path */
+        rt_splats_add_to_image(splats, st->paths, img);
     return sig;
 }
 
@@ -288,9 +299,6 @@ int main(int argc, char **argv)
     rt_image *ref = load_reference(&o);
     if (mpi.size > o.width)
         app_fail(prog, "%d ranks are more than the %d image rows", mpi.size, o.width);
-    if (mpi.size > 1 && strategy_splats(&o))
-        app_fail(prog, "--strategy %s splats light paths onto any pixel: it runs in one process, "
-                       "not over %d ranks", o.strategy, mpi.size);
     /* The file is created only once the image is there (a job killed on
      * the way leaves nothing), but whether it can be is checked now. */
     app_outfile out;
@@ -347,14 +355,18 @@ int main(int argc, char **argv)
     job.progress = tty || mpi.active ? on_row : NULL;
     job.progress_ctx = &watch;
     rt_render_stats st;
-    if (rt_render_rows(&job, img, mpi.rank, mpi.size, &st) < 0) {
+    rt_splats *splats = strategy_splats(&o) ? rt_splats_create(o.width, o.width) : NULL;
+    if ((strategy_splats(&o) && !splats) ||
+        rt_render_part(&job, img, mpi.rank, mpi.size, splats, &st) < 0) {
+        rt_splats_destroy(splats);
         rt_image_destroy(img);
         rt_image_destroy(ref);
         rt_scene_destroy(scene);
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
     }
-    int sig = combine(&mpi, img, &st);
+    int sig = combine(&mpi, img, splats, &st);
+    rt_splats_destroy(splats);
     if (mpi.active) /* the whole job's time, the gathering included */
         st.seconds = omp_get_wtime() - clock[0];
     if (tty)

@@ -46,7 +46,7 @@ bool rt_bdpt_camera_importance(const rt_bdpt_ctx *c, vec3 p, size_t *px, double 
 
 /* BEGIN SNIPPET bdpt_strategies */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, mc_rng *aux,
-                    bool seen_here, double *splat, uint64_t *segments)
+                    bool seen_here, rt_splats *splats, uint64_t *segments)
 {
     const rt_path_settings *ps = c->ps;
     int depth = ps->max_depth < RT_BDPT_MAX_DEPTH ? ps->max_depth : RT_BDPT_MAX_DEPTH;
@@ -83,7 +83,7 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
                 continue;
             if (t == 1) {
                 rt_bdpt_splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, all ? aux : NULL,
-                                        splat, segments);
+                                        splats, segments);
                 continue;
             }
             if (all && s == 0 && rt_bdpt_estimated_apart(ps, cam, t, jd))

@@ -57,6 +57,7 @@
 #include "render/integrator.h"
 #include "render/sampler.h"
 #include "render/scene.h"
+#include "render/splat.h"
 
 /* The longest subpath: max_depth of a bidirectional render is at most
  * this many segments. */
@@ -138,7 +139,7 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
  * (bdpt_s, bdpt_t) unweighted; RT_LIGHTTRACE: every (s, 1), unweighted,
  * and no camera subpath). Returns the radiance of the strategies with
  * t >= 2 for this pixel; adds those with t = 1, times the camera
- * importance, to splat[3 j .. 3 j + 3) of the pixel j they are seen in.
+ * importance, to the sums of the pixel j they are seen in (splats).
  * With every strategy weighted, the paths E S* L (see below) are left
  * out and estimated apart: here from the camera subpath's first hit
  * when seen_here (a pixel that is not an edge), else by the caller with
@@ -148,7 +149,7 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
  * from aux (rt_bdpt_aux_stream), every other from sampler. Adds the rays
  * traced to *segments. */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, mc_rng *aux,
-                    bool seen_here, double *splat, uint64_t *segments);
+                    bool seen_here, rt_splats *splats, uint64_t *segments);
 
 /* --- what the camera sees through glass and mirrors ------------------- *
  *

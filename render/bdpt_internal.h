@@ -91,12 +91,12 @@ vec3 rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt
 
 /* Strategy (s, 1), s >= 1: the light subpath's end seen by the camera
  * vertex cam0, times the camera importance (and the weight from sp, NULL:
- * unweighted), added to splat[3 j .. 3 j + 3) of the pixel j it is seen
+ * unweighted), added to splats' sums of the pixel j it is seen
  * in; roulette on the shadow ray when aux is given. Adds the rays traced
  * to *segments. */
 void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s,
                              const rt_bdpt_vertex *cam0, const rt_bdpt_subpath_pdfs *sp,
-                             mc_rng *aux, double *splat, uint64_t *segments);
+                             mc_rng *aux, rt_splats *splats, uint64_t *segments);
 
 /* --- the families estimated apart (bdpt_seen.c) ----------------------- */
 

@@ -86,7 +86,7 @@ vec3 rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt
 /* BEGIN SNIPPET bdpt_splat */
 void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s,
                              const rt_bdpt_vertex *cam0, const rt_bdpt_subpath_pdfs *sp,
-                             mc_rng *aux, double *splat, uint64_t *segments)
+                             mc_rng *aux, rt_splats *splats, uint64_t *segments)
 {
     const rt_bdpt_vertex *y = &light[s - 1];
     size_t px;
@@ -111,12 +111,9 @@ void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, 
     if (f == 0.0 || !visible(c->scene, y->p, cam0->p, segments))
         return;
     v = vec3_scale(v, f);
-    /* A non-finite splat would spoil a pixel for good: left out (the
-     * factors above are finite for any path that gets here). */
-    if (!isfinite(v.x) || !isfinite(v.y) || !isfinite(v.z))
-        return;
-    splat[3 * px] += v.x;
-    splat[3 * px + 1] += v.y;
-    splat[3 * px + 2] += v.z;
+    /* A non-finite splat would spoil a pixel for good: rt_splats_add_rgb
+     * leaves it out (the factors above are finite for any path that gets
+     * here). */
+    (void)rt_splats_add_rgb(splats, px, v.x, v.y, v.z);
 }
 /* END SNIPPET bdpt_splat */

@@ -5,14 +5,16 @@
  * Tracing: The Rest of Your Life": a path started on the lamp lands where
  * it lands, and the camera sees it in whichever pixel that is; its
  * contribution is added there (a splat), not to the pixel whose sample
- * started it. The loop keeps the promises of render/render.h:
+ * started it. The driver (render/drive.c) keeps the promises of
+ * render/render.h for these strategies too:
  * - Each pixel sample traces its camera subpath and one light subpath from
- *   the pixel's own sampler (render/sampler.h), in passes over the image.
- * - Splats go to one of RT_SPLAT_BUFFERS buffers, chosen by the image row
- *   whose samples made them (row y: buffer y mod RT_SPLAT_BUFFERS); the
- *   rows of one buffer are rendered in order by one thread at a time, and
- *   the buffers are added to the image in a fixed order at the end: the
- *   image is bit-identical for any number of threads.
+ *   the pixel's own sampler (render/sampler.h), in passes over the image,
+ *   with the row kernel rt_row_splat (render/row.h).
+ * - Splats go to the sums of the thread that rendered the row, exact
+ *   fixed-point sums (render/splat.h) that do not depend on the order of
+ *   their terms; at the end the threads' sums (and, under MPI, the
+ *   processes') are added and divided by the number of light paths: the
+ *   image is bit-identical for any number of threads and processes.
  * - The cancel flag is read between rows; the N light paths of the rows
  *   finished make an unbiased estimate of every pixel (each light path
  *   estimates the whole image), so a stopped render divides the splats by
@@ -25,16 +27,8 @@
 #ifndef RT_LIGHTTRACE_H
 #define RT_LIGHTTRACE_H
 
-#include "render/image.h"
-#include "render/render.h"
-
-/* How many splat buffers a render keeps (each a double per pixel and
- * channel): also the most threads that render at once. */
+/* The most splat sums a render keeps, one per thread (48 bytes per pixel
+ * each): also the most threads that render these strategies at once. */
 #define RT_SPLAT_BUFFERS 8
-
-/* rt_render for a job whose strategy splats (rt_strategy_splats), with
- * the same contract; also -1 when job->path.max_depth exceeds
- * RT_BDPT_MAX_DEPTH. */
-int rt_splat_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats);
 
 #endif /* RT_LIGHTTRACE_H */

@@ -30,6 +30,10 @@
  *   order, so the image is the one of one path at a time, bit for bit
  *   (rt_render_job.one_path_at_a_time keeps that reference). So does
  *   every sampler.
+ * One driver (render/drive.c) owns the loop for every strategy: the
+ * passes, the streams, the rows shared by the threads, cancel, progress
+ * and statistics; the row kernels of render/row.h (one path at a time,
+ * four at a time, light paths that splat) render the samples.
  * Library code never prints; progress goes to a caller's callback.
  */
 #ifndef RT_RENDER_H
@@ -44,6 +48,7 @@
 #include "render/integrator.h"
 #include "render/sampler.h"
 #include "render/scene.h"
+#include "render/splat.h"
 
 /* How far a render has got. */
 typedef struct rt_progress {
@@ -103,7 +108,19 @@ rt_sampler rt_render_sampler(const rt_render_job *job, mc_rng rng, uint64_t pixe
  * P processes taking first = 0 .. P-1 with step P render disjoint rows of
  * the same image. Progress and stats count these rows only. Strategies
  * that splat (rt_strategy_splats: light tracing, bidirectional) need the
- * whole image: -1 unless first = 0 and step = 1. */
+ * whole image: -1 unless first = 0 and step = 1 (rt_render_part splits
+ * them). */
 int rt_render_rows(const rt_render_job *job, rt_image *img, int first, int step, rt_render_stats *stats);
+
+/* rt_render_rows for any strategy, with the splats kept apart: for a
+ * strategy that splats, splats (the image's size) is cleared and receives
+ * the exact sums of the light paths of these rows (render/splat.h), and
+ * img only the pixel samples of these rows; NULL is fine otherwise, and
+ * left alone. P processes each render their rows, add their splats
+ * (rt_splats_merge, in any order: the sums are exact), and divide by the
+ * light paths of all of them together, the sum of their stats->paths
+ * (rt_splats_add_to_image): the image of one process, bit for bit. */
+int rt_render_part(const rt_render_job *job, rt_image *img, int first, int step, rt_splats *splats,
+                   rt_render_stats *stats);
 
 #endif /* RT_RENDER_H */

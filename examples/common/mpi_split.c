@@ -214,6 +214,45 @@ bool app_mpi_gather_rows(const app_mpi *m, void *rows, size_t row_bytes, int n_r
     return ok;
 }
 
+/* MPI's reduction operator for pairs (low, high) of 128-bit integers:
+ * inout += in, the carry of the low words into the high ones. */
+static void add_u128(void *in, void *inout, int *len, MPI_Datatype *type)
+{
+    (void)type;
+    const uint64_t *a = in;
+    uint64_t *b = inout;
+    for (int i = 0; i < *len; i++) {
+        uint64_t lo = b[2 * i] + a[2 * i];
+        b[2 * i + 1] += a[2 * i + 1] + (lo < a[2 * i]);
+        b[2 * i] = lo;
+    }
+}
+
+bool app_mpi_sum_u128(const app_mpi *m, uint64_t *words, size_t n)
+{
+    if (!m->active || m->size == 1)
+        return true;
+    /* Pieces of 2^20 numbers (16 MB): MPI counts in int, and the library
+     * may keep a buffer of the piece's size for the reduction. */
+    enum { PIECE = 1 << 20 };
+    MPI_Datatype pair;
+    MPI_Op op;
+    MPI_Type_contiguous(2, MPI_UINT64_T, &pair);
+    MPI_Type_commit(&pair);
+    MPI_Op_create(add_u128, 1, &op);
+    bool ok = true;
+    for (size_t i = 0; i < n && ok; i += PIECE) {
+        int count = (int)(n - i < PIECE ? n - i : PIECE);
+        uint64_t *at = words + 2 * i;
+        int rc = m->rank == 0 ? MPI_Reduce(MPI_IN_PLACE, at, count, pair, op, 0, MPI_COMM_WORLD)
+                              : MPI_Reduce(at, NULL, count, pair, op, 0, MPI_COMM_WORLD);
+        ok = rc == MPI_SUCCESS;
+    }
+    MPI_Op_free(&op);
+    MPI_Type_free(&pair);
+    return ok;
+}
+
 void app_mpi_end(app_mpi *m)
 {
     if (m->active)

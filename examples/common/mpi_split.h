@@ -75,6 +75,13 @@ int app_mpi_settle_stop(app_mpi *m, atomic_int *stop);
  * transfer fails. */
 bool app_mpi_gather_rows(const app_mpi *m, void *rows, size_t row_bytes, int n_rows);
 
+/* Sums, on rank 0, n 128-bit two's-complement integers stored as pairs
+ * of words (low word first, then high: words[2 i], words[2 i + 1]) over
+ * the ranks, in place; the other ranks only send. Integer sums do not
+ * depend on the order of the terms, so neither does the result. Returns
+ * false when a transfer fails. */
+bool app_mpi_sum_u128(const app_mpi *m, uint64_t *words, size_t n);
+
 /* Leaves the run (MPI_Finalize when active). */
 void app_mpi_end(app_mpi *m);
 

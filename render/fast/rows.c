@@ -66,17 +66,22 @@ static void turn_diffuse(const rt_render_job *job, rt_isa isa, lane *lanes,
 }
 /* END SNIPPET turn_diffuse */
 
-/* render_row for the book's integrator, RT_LANES paths at a time:
+/* rt_row_reference for the book's integrator, RT_LANES paths at a time:
  * each lane takes a pixel and traces its samples one after the other,
- * exactly as render_row does (the same stream, the same order, so the
+ * exactly as rt_row_reference does (the same stream, the same order, so the
  * same numbers), and the lanes' rays are traced together by one
  * rt_scene_hit4 per segment. A lane whose pixel is done takes the next
  * pixel of the row; at the end of the row, a lane with no pixel left
  * traces its last ray again and its results are ignored. */
-void rt_fast_render_row(const rt_render_job *job, rt_image *img, mc_rng *streams, const rt_jitter *jt,
-                        int y, uint64_t k0, uint64_t k1, rt_cell c0, uint64_t *segments,
-                        uint64_t *dropped)
+rt_row_counts rt_fast_render_row(const rt_row *r)
 {
+    const rt_render_job *job = r->job;
+    rt_image *img = r->img;
+    mc_rng *streams = r->streams;
+    const rt_jitter *jt = r->jt;
+    int y = r->y;
+    uint64_t k0 = r->k0, k1 = r->k1;
+    rt_cell c0 = r->c0;
     rt_isa isa = rt_isa_best();
     int w = img->width, next = 0;
     unsigned live = 0; /* the lanes with a pixel: each has a path under way */
@@ -148,7 +153,6 @@ void rt_fast_render_row(const rt_render_job *job, rt_image *img, mc_rng *streams
             settle |= (unsigned)lanes[i].path.done << i;
         settle &= live;
     }
-    *segments += seg;
-    *dropped += drop;
+    return (rt_row_counts){seg, drop};
 }
 

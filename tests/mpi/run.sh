@@ -12,6 +12,9 @@
 #   scrambles of every method, split over the ranks) prints the same
 #   table. Negative
 #   control: another seed must give other bytes.
+# - The same for cornell_box's strategies that splat (lighttrace, bdpt
+#   with and without --roulette, a 20x20 image at 6 spp), for K = 1, 2, 3
+#   and 1 or 3 threads per rank.
 # - An output path that cannot be written (its directory is a file): exit
 #   non-zero within 10 s, one line on stderr, no file of any name left.
 #   A bad option: exit 2, one line.
@@ -82,6 +85,34 @@ for k in 1 2 3; do
         check "qmc, $k rank(s) x $t thread(s): same bytes" $? "exit $rc, $(diff "$tmp/qmc.ref" "$tmp/qmc.out" | head -3) $(head -2 "$tmp/err")"
     done
 done
+
+# The strategies that splat light paths onto any pixel: each rank renders
+# its rows and keeps its splats in exact sums (render/splat.h), which rank
+# 0 adds: the bytes of one process, here at 3 threads too (the splat sums
+# are per thread).
+splat_strategies=("lighttrace" "bdpt" "bdpt --roulette")
+for s in "${splat_strategies[@]}"; do
+    name=${s// /_}
+    # shellcheck disable=SC2086 # $s holds the strategy and its flag
+    "$ref/bin/cornell_box" --width 20 --spp 6 --seed 3 --strategy $s -o "$tmp/$name.ref.pfm" >/dev/null
+    for k in 1 2 3; do
+        for t in 1 3; do
+            rm -f "$tmp/$name.pfm"
+            # shellcheck disable=SC2086
+            OMP_NUM_THREADS=$t "${mpirun[@]}" -np "$k" "$build/bin/cornell_box" --width 20 --spp 6 --seed 3 \
+                --strategy $s -o "$tmp/$name.pfm" >/dev/null 2>"$tmp/err"
+            rc=$?
+            cmp -s "$tmp/$name.ref.pfm" "$tmp/$name.pfm" && [ $rc = 0 ]
+            check "cornell_box --strategy $s, $k rank(s) x $t thread(s): same image bytes" $? \
+                "exit $rc, $(head -2 "$tmp/err")"
+        done
+    done
+done
+# shellcheck disable=SC2086
+"${mpirun[@]}" -np 2 "$build/bin/cornell_box" --width 20 --spp 6 --seed 4 --strategy bdpt \
+    -o "$tmp/bdpt.pfm" >/dev/null 2>&1
+! cmp -s "$tmp/bdpt.ref.pfm" "$tmp/bdpt.pfm"
+check "negative control: cornell_box --strategy bdpt --seed 4 differs from --seed 3" $? "the same bytes"
 
 # The comparison can fail: another seed gives other bytes.
 "${mpirun[@]}" -np 2 "$build/bin/cornell_box" --width 24 --spp 12 --seed 4 -o "$tmp/box.pfm" >/dev/null 2>&1
