@@ -171,8 +171,11 @@ const cat_case *cat_find_case(const char *name, const cat_row **row);
 /* The number of coordinates of a point: 3, 3, 2, 1 or 1. */
 int cat_point_dims(const cat_row *r);
 
-/* "key=default ..." into buf, "-" for a row without parameters. */
-void cat_param_defaults(const cat_row *r, char *buf, size_t size);
+/* "key=default ..." into buf, "-" for a row without parameters; as
+ * snprintf, at most size bytes with the terminator (buf may be NULL when
+ * size is 0), and the length of the whole text is returned: a result
+ * >= size says the text was cut. */
+size_t cat_param_defaults(const cat_row *r, char *buf, size_t size);
 
 /* Sets every parameter of *p to the row's defaults. */
 void cat_defaults(const cat_row *r, cat_values *p);

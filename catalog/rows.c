@@ -39,16 +39,20 @@ int cat_point_dims(const cat_row *r)
     return r->point == CAT_DIRECTION || r->point == CAT_POINT ? 3 : (r->point == CAT_PLANAR ? 2 : 1);
 }
 
-void cat_param_defaults(const cat_row *r, char *buf, size_t size)
+size_t cat_param_defaults(const cat_row *r, char *buf, size_t size)
 {
-    snprintf(buf, size, "-");
+    if (!r->params->key)
+        return (size_t)snprintf(buf, size, "-");
     size_t used = 0;
     for (const cat_param *p = r->params; p->key; p++) {
-        int k = snprintf(buf + used, size - used, "%s%s=%s", used ? " " : "", p->key, p->def);
-        if (k < 0 || (size_t)k >= size - used)
-            return;
+        /* Past the end of buf, snprintf with no room only counts. */
+        size_t room = used < size ? size - used : 0;
+        int k = snprintf(room ? buf + used : NULL, room, "%s%s=%s", used ? " " : "", p->key, p->def);
+        if (k < 0)
+            break;
         used += (size_t)k;
     }
+    return used;
 }
 
 static const cat_param *param_of(const cat_row *r, const char *key, size_t len)

@@ -1,8 +1,9 @@
 /* render/bdpt_internal.h - what the files of the bidirectional path tracer
  * share among themselves (this book's #ch-caustic; Veach's thesis, 1997,
- * its chapter 10). Internal: only render/bdpt*.c include it, no program or
- * test does, and `make install` does not ship it; render/bdpt.h is the
- * contract.
+ * its chapter 10). Internal: render/bdpt*.c include it, and the value
+ * tests (tests/test_render_values.c), which pin the weights against
+ * densities written out by hand; no program does, and `make install` does
+ * not ship it; render/bdpt.h is the contract.
  *
  * The module follows the algorithm's seams, one file each:
  *   bdpt.c       the context, the camera's importance, and rt_bdpt_sample,

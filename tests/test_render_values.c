@@ -1,0 +1,782 @@
+/* tests/test_render_values.c - the values that decide a bidirectional
+ * render's noise, pinned against numbers the test derives itself
+ * (render/bdpt.h; Veach's thesis, 1997, chapters 9 and 10):
+ *   - the power heuristic's weights of hand-built paths (camera - wall -
+ *     lamp, camera - wall - wall - lamp, camera - wall - wall - wall -
+ *     lamp), from each strategy's density written out here in the area
+ *     measure (emitter area, cosine emission, cosine sampling, the film's
+ *     density, each turned into area density by cos / distance^2);
+ *   - the pinhole camera's importance and its density per unit area on a
+ *     300 x 200 film, against the closed forms and the normalisation of
+ *     the importance over the film's directions;
+ *   - a white furnace rendered at RT_BDPT_MAX_DEPTH, the largest depth the
+ *     Cornell box program lets the splatting strategies take, against the
+ *     furnace's closed form (this also fills every subpath buffer to the
+ *     last vertex under the sanitizers);
+ *   - the rays traced by the families estimated apart (the lamp seen
+ *     through glass and mirrors, the caustic seen through the sphere):
+ *     an exact count in a scene where every ray's fate is known, and a
+ *     per-sample upper bound from the depth in the book's scene.
+ * Every value also has a negative control: the same check against a
+ * plausible wrong value (the balance heuristic, a square film, the lens
+ * cosine dropped, one depth short, one split level short) must fail.
+ * Compiling with -DVALUES_BREAK=k (1 weights, 2 camera, 3 furnace,
+ * 4 segments) perturbs the expected value of check k so that it fails. */
+#include "tests/support/mc_test.h"
+
+#include <gsl/gsl_cdf.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mc/chi2.h"
+#include "mc/constants.h"
+#include "mc/onb.h"
+#include "mc/stats.h"
+#include "render/bdpt.h"
+#include "render/bdpt_internal.h"
+#include "render/render.h"
+#include "render/scenes.h"
+#include "render/splat.h"
+#include "tests/support/negctl.h"
+
+#ifndef VALUES_BREAK
+#define VALUES_BREAK 0
+#endif
+
+/* The film of the weight and camera tests: not square, so that a density
+ * that takes the film's area as width^2 or height^2 pixels is caught. */
+enum { FILM_W = 300, FILM_H = 200 };
+
+static double rel_err(double a, double b) { return fabs(a - b) / fabs(b); }
+
+/* --- densities written out from first principles ---------------------- */
+
+/* The view axis and the film's area on the plane at distance 1 of a
+ * camera with vertical field of view vfov and aspect w / h: the plane's
+ * half-height is tan(vfov / 2), its half-width that times w / h. */
+static vec3 view_axis(const rt_camera_params *cp)
+{
+    return vec3_normalize(vec3_sub(cp->lookat, cp->lookfrom));
+}
+
+static double film_area(const rt_camera_params *cp, int w, int h)
+{
+    double half_h = tan(0.5 * cp->vfov_deg * MC_PI / 180.0);
+    return (2.0 * half_h) * (2.0 * half_h * (double)w / (double)h);
+}
+
+/* The density per unit area at x (normal n) with which the camera ray,
+ * uniform over the film of area A at distance 1, lands there: per unit
+ * solid angle 1 / (A cos^3 theta) (a patch dA of the plane subtends
+ * cos^3 theta dA / 1^2), times cos at x over the squared distance. */
+static double camera_area_pdf(const rt_camera_params *cp, double film, vec3 x, vec3 n)
+{
+    vec3 d = vec3_sub(x, cp->lookfrom);
+    double dist = vec3_length(d);
+    double cos_theta = vec3_dot(view_axis(cp), d) / dist;
+    double cos_x = fabs(vec3_dot(n, d)) / dist;
+    return 1.0 / (film * cos_theta * cos_theta * cos_theta) * cos_x / (dist * dist);
+}
+
+/* The density per unit area at `to` (normal n_to) of a direction drawn
+ * at `from` with density cos / pi about n_from (cosine sampling at a
+ * Lambertian vertex, or cosine emission from a lamp): (cos_from / pi) x
+ * cos_to / distance^2. */
+static double cosine_area_pdf(vec3 from, vec3 n_from, vec3 to, vec3 n_to)
+{
+    vec3 d = vec3_sub(to, from);
+    double dist = vec3_length(d);
+    double cos_from = vec3_dot(n_from, d) / dist, cos_to = fabs(vec3_dot(n_to, d)) / dist;
+    return cos_from > 0.0 ? cos_from * MC_INV_PI * cos_to / (dist * dist) : 0.0;
+}
+
+/* A hand-built path in lambert's room: p[0] on the lamp (normal n[0],
+ * facing down), p[1 .. n - 2] on the walls (Lambertian, inward normals),
+ * p[n - 1] the camera. */
+typedef struct hand_path {
+    int n;
+    vec3 p[6], nrm[6];
+} hand_path;
+
+/* The density p_r with which strategy r (r light vertices, n - r camera
+ * vertices) makes the path: the light subpath picks p[0] with density
+ * 1 / (emitters x lamp area) and continues by cosine emission, then
+ * cosine sampling; the camera subpath makes p[n - 2] through the film and
+ * continues by cosine sampling toward the lamp. For n = 3 (camera - wall
+ * - lamp), with pL = 1 / A_lamp:
+ *   p_0 = pcam(p1) pcos(p1 -> p0)
+ *   p_1 = pL pcam(p1)
+ *   p_2 = pL pemit(p0 -> p1). */
+static double strategy_pdf(const hand_path *x, int r, const rt_camera_params *cp, double film,
+                           double light_area_pdf)
+{
+    int n = x->n;
+    double p = r >= 1 ? light_area_pdf : 1.0;
+    for (int i = 1; i < r; i++) /* made from p[i - 1] by the light subpath */
+        p *= cosine_area_pdf(x->p[i - 1], x->nrm[i - 1], x->p[i], x->nrm[i]);
+    for (int i = r; i <= n - 2; i++) /* made from p[i + 1] by the camera subpath */
+        p *= i == n - 2 ? camera_area_pdf(cp, film, x->p[i], x->nrm[i])
+                        : cosine_area_pdf(x->p[i + 1], x->nrm[i + 1], x->p[i], x->nrm[i]);
+    return p;
+}
+
+/* The weight of strategy s under the heuristic of exponent beta (2: the
+ * power heuristic the renderer uses, 1: the balance heuristic): every
+ * strategy of a path of Lambertian vertices can make it. */
+static double hand_weight(const hand_path *x, int s, double beta, const rt_camera_params *cp,
+                          double film, double light_area_pdf)
+{
+    double sum = 0.0, ps = pow(strategy_pdf(x, s, cp, film, light_area_pdf), beta);
+    for (int r = 0; r < x->n; r++)
+        sum += pow(strategy_pdf(x, r, cp, film, light_area_pdf), beta);
+#if VALUES_BREAK == 1
+    if (s == 1)
+        ps *= 1.001; /* the deliberately broken expectation */
+#endif
+    return ps / sum;
+}
+
+/* The renderer's vertices of the path: as the weight of the whole path
+ * sees it (x[0] the start of a light subpath), and as a camera subpath
+ * that reached the lamp sees its last vertex (a surface hit on the
+ * emitting side). */
+static rt_bdpt_vertex lamp_vertex(const hand_path *x, const rt_scene *s, bool as_hit)
+{
+    const rt_prim *lamp = &rt_scene_emitter_prims(s)[0];
+    return (rt_bdpt_vertex){as_hit ? RT_BDPT_SURFACE : RT_BDPT_LIGHT, x->p[0], x->nrm[0], x->nrm[0],
+                            true, false, rt_scene_material(s, lamp->material), 0,
+                            vec3_make(1.0, 1.0, 1.0)};
+}
+
+static rt_bdpt_vertex wall_vertex(vec3 p, vec3 n, const rt_material *m)
+{
+    return (rt_bdpt_vertex){RT_BDPT_SURFACE, p, n, n, true, false, m, -1, vec3_make(1.0, 1.0, 1.0)};
+}
+
+static rt_bdpt_vertex camera_vertex(const rt_bdpt_ctx *c)
+{
+    return (rt_bdpt_vertex){RT_BDPT_CAMERA, c->camera->origin, c->forward, c->forward, true, false,
+                            NULL, -1, vec3_make(1.0, 1.0, 1.0)};
+}
+
+/* The three paths of the weight test, in "high-entropy" coordinates on
+ * lambert's room (walls at 0 and 555; the lamp at y = 554, x in
+ * [213, 343], z in [227, 332]). */
+static hand_path weight_path(int k)
+{
+    vec3 down = vec3_make(0.0, -1.0, 0.0), up = vec3_make(0.0, 1.0, 0.0);
+    vec3 left = vec3_make(1.0, 0.0, 0.0), back = vec3_make(0.0, 0.0, -1.0);
+    vec3 lamp = vec3_make(251.37, 554.0, 290.85), cam = vec3_make(278.0, 278.0, -800.0);
+    vec3 floor_pt = vec3_make(318.6, 0.0, 201.35), wall_pt = vec3_make(0.0, 161.2, 402.77);
+    vec3 back_pt = vec3_make(120.4, 307.9, 555.0);
+    if (k == 0)
+        return (hand_path){3, {lamp, floor_pt, cam}, {down, up, back}};
+    if (k == 1)
+        return (hand_path){4, {lamp, wall_pt, floor_pt, cam}, {down, left, up, back}};
+    return (hand_path){5, {lamp, back_pt, wall_pt, floor_pt, cam}, {down, back, left, up, back}};
+}
+
+/* The renderer's path x[0..n) of hand path h; x[0] as a light start. */
+static void renderer_path(const hand_path *h, const rt_scene *s, const rt_bdpt_ctx *c,
+                          const rt_material *white, rt_bdpt_vertex *x)
+{
+    x[0] = lamp_vertex(h, s, false);
+    for (int i = 1; i < h->n - 1; i++)
+        x[i] = wall_vertex(h->p[i], h->nrm[i], white);
+    x[h->n - 1] = camera_vertex(c);
+}
+
+/* The weight of the join (s, n - s) through the cached subpath densities
+ * (rt_bdpt_join_weight, the weighted render's own way): the light
+ * subpath x[0..s), the camera subpath x[n - 1] down to x[s]. */
+static double join_weight_of(const rt_bdpt_ctx *c, const hand_path *h, const rt_scene *s,
+                             const rt_bdpt_vertex *x, int sv)
+{
+    int n = h->n, t = n - sv;
+    rt_bdpt_vertex light[6], cam[6];
+    for (int i = 0; i < sv; i++)
+        light[i] = x[i];
+    for (int j = 0; j < t; j++)
+        cam[j] = x[n - 1 - j];
+    if (sv == 0)
+        cam[t - 1] = lamp_vertex(h, s, true);
+    rt_bdpt_subpath_pdfs sp;
+    rt_bdpt_cache_pdfs(c, light, sv, cam, t, &sp);
+    return rt_bdpt_join_weight(c, &sp, light, sv, cam, t);
+}
+
+/* Every strategy's weight of the three paths, from rt_bdpt_mis_weight and
+ * from the joins' cached densities, against the power heuristic over the
+ * densities above: relative error < 1e-12 (the two computations share
+ * no code; the tolerance is a few hundred roundings). Also the exception
+ * of a lamp the camera sees directly (n = 2): all to s = 0. Negative
+ * controls: the balance heuristic's weights (exponent 1) must differ from
+ * the renderer's by more than 1e-3 somewhere, and the renderer with
+ * strategy 1 counted twice (neg.mis_double) from the power heuristic's. */
+static void test_mis_weights_by_hand(void **state)
+{
+    negctl *nc = *state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("lambert", &cp);
+    assert_non_null(s);
+    assert_int_equal(rt_scene_emitter_count(s), 1);
+    rt_camera cam = rt_camera_make(cp, FILM_W, FILM_H);
+    rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+    rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam);
+    rt_material white = rt_lambertian(vec3_make(0.73, 0.73, 0.73));
+    double film = film_area(&cp, FILM_W, FILM_H);
+    double light_pdf = 1.0 / (130.0 * 105.0); /* the lamp is 130 x 105 */
+    double worst = 0.0, balance_gap = 0.0;
+    for (int k = 0; k < 3; k++) {
+        hand_path h = weight_path(k);
+        rt_bdpt_vertex x[6];
+        renderer_path(&h, s, &c, &white, x);
+        for (int sv = 0; sv < h.n; sv++) {
+            double want = hand_weight(&h, sv, 2.0, &cp, film, light_pdf);
+            double got = rt_bdpt_mis_weight(&c, x, h.n, sv);
+            double got_join = join_weight_of(&c, &h, s, x, sv);
+            printf("path of %d vertices, s = %d: weight %.15f, joins' %.15f, by hand %.15f\n", h.n,
+                   sv, got, got_join, want);
+            worst = fmax(worst, fmax(rel_err(got, want), rel_err(got_join, want)));
+            balance_gap = fmax(balance_gap, fabs(got - hand_weight(&h, sv, 1.0, &cp, film, light_pdf)));
+        }
+    }
+    printf("largest relative error of a weight: %.2e\n", worst);
+    assert_true(worst < 1e-12);
+    if (!negctl_record(nc, "the balance heuristic's weights", "weights by hand", balance_gap > 1e-3))
+        fail_msg("the balance heuristic is not told from the power heuristic: gap %.2e", balance_gap);
+    /* The renderer's own hook: strategy 1 counted twice in the sum. */
+    rt_path_settings twice = ps;
+    twice.neg.mis_double = 2;
+    rt_bdpt_ctx cb = rt_bdpt_ctx_make(s, &twice, &cam);
+    hand_path h3 = weight_path(1);
+    rt_bdpt_vertex x3[6];
+    renderer_path(&h3, s, &cb, &white, x3);
+    double gap = fabs(rt_bdpt_mis_weight(&cb, x3, h3.n, 2) -
+                      hand_weight(&h3, 2, 2.0, &cp, film, light_pdf));
+    if (!negctl_record(nc, "a renderer counting strategy 1 twice", "weights by hand", gap > 1e-6))
+        fail_msg("the double-counted strategy was not caught: gap %.2e", gap);
+    /* The lamp seen directly: both strategies could make it, but the
+     * render gives it wholly to the camera ray (render/bdpt.h). */
+    hand_path d = {2, {weight_path(0).p[0]}, {vec3_make(0.0, -1.0, 0.0)}};
+    rt_bdpt_vertex x2[2] = {lamp_vertex(&d, s, false), camera_vertex(&c)};
+    assert_near(rt_bdpt_mis_weight(&c, x2, 2, 0), 1.0, 0.0);
+    assert_near(rt_bdpt_mis_weight(&c, x2, 2, 1), 0.0, 0.0);
+    rt_scene_destroy(s);
+}
+
+/* --- the camera ------------------------------------------------------- */
+
+/* The point at distance `dist` from the camera through the image-plane
+ * point (px, py) in pixel units, from the book's basis written out: w
+ * back toward the viewer, u = vup x w to the right, v = w x u up; the
+ * top-left corner of the plane at distance 1 is -w - half_w u + half_h v. */
+static vec3 through_film(const rt_camera_params *cp, int w, int h, double px, double py,
+                         double dist, double *cos_theta)
+{
+    double half_h = tan(0.5 * cp->vfov_deg * MC_PI / 180.0), half_w = half_h * w / (double)h;
+    vec3 ww = vec3_normalize(vec3_sub(cp->lookfrom, cp->lookat));
+    vec3 u = vec3_normalize(vec3_cross(cp->vup, ww)), v = vec3_cross(ww, u);
+    double a = -half_w + 2.0 * half_w * px / w, b = half_h - 2.0 * half_h * py / h;
+    vec3 q = vec3_add(vec3_neg(ww), vec3_add(vec3_scale(u, a), vec3_scale(v, b)));
+    *cos_theta = 1.0 / vec3_length(q);
+    return vec3_add(cp->lookfrom, vec3_scale(vec3_normalize(q), dist));
+}
+
+/* The importance W_j of a pixel per unit solid angle: Veach's (and
+ * pbrt's) pinhole importance is 1 / (A cos^4 theta) per unit solid angle
+ * per unit area of the lens, A the pixel's area at distance 1; the join
+ * to a pinhole counts the lens cosine cos theta (the geometry term's
+ * factor at the camera), so what the splat carries is
+ * cos theta / (A_pix cos^4 theta). */
+static double importance_closed_form(double pixel_area, double cos_theta)
+{
+    double c4 = cos_theta * cos_theta * cos_theta * cos_theta;
+#if VALUES_BREAK == 2
+    return 1.0 / (pixel_area * c4); /* the lens cosine dropped */
+#else
+    return cos_theta / (pixel_area * c4);
+#endif
+}
+
+/* On the 300 x 200 film of lambert's camera: the pixel area, the
+ * importance at the centre and at the centres of the four corner pixels
+ * (with their pixel indices) against the closed form (relative error <
+ * 1e-12), also with the renderer's hook that drops the 1 / cos^3
+ * (neg.splat_drop_cos3), which must not match; a point just outside the
+ * film has none. Then the normalisation:
+ * each pixel's importance integrates to 1 over its directions, so over the
+ * whole film to W x H. Estimated from N = 400000 directions uniform in the
+ * cone about the view axis that holds the film (seed 2101), statistic
+ * z = (mean / (W H) - 1) / stderr, threshold 4 (two-sided false alarm
+ * 6.3e-5). Negative control: the same integral of 1 / (A_pix cos^4)
+ * (the lens cosine dropped) must give |z| > 4. And the camera's density
+ * per unit area, which only the weights use: recovered from the weights
+ * of the path camera - floor - lamp as pemit(lamp -> floor) x
+ * sqrt(w_1 / w_2) (p_1 / p_2 = pcam / pemit, the lamp's start density
+ * cancelling), against 1 / (A_film cos^3) cos_x / d^2 with A_film the
+ * 300 x 200 film; negative control: the same with a square film of the
+ * height's field of view must differ. */
+static void test_camera_importance_and_density(void **state)
+{
+    negctl *nc = *state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("lambert", &cp);
+    rt_camera cam = rt_camera_make(cp, FILM_W, FILM_H);
+    rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+    rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam);
+    double film = film_area(&cp, FILM_W, FILM_H), a_pix = film / (FILM_W * FILM_H);
+    assert_true(rel_err(c.pixel_area, a_pix) < 1e-12);
+    /* The centre, then the four corner pixels' centres. */
+    static const double at[5][2] = {{150.0, 100.0}, {0.5, 0.5}, {299.5, 0.5}, {0.5, 199.5},
+                                    {299.5, 199.5}};
+    static const size_t want_px[5] = {100 * FILM_W + 150, 0, FILM_W - 1, (FILM_H - 1) * FILM_W,
+                                      FILM_W * FILM_H - 1};
+    for (int i = 0; i < 5; i++) {
+        double cos_theta, we;
+        size_t px;
+        vec3 p = through_film(&cp, FILM_W, FILM_H, at[i][0], at[i][1], 3.7 + i, &cos_theta);
+        assert_true(rt_bdpt_camera_importance(&c, p, &px, &we));
+        double want = importance_closed_form(a_pix, cos_theta);
+        printf("film point (%.1f, %.1f): cos %.6f, importance %.10g, closed form %.10g, pixel %zu\n",
+               at[i][0], at[i][1], cos_theta, we, want, px);
+        /* The axis meets the film on a pixel corner: any of four. */
+        assert_true(i == 0 || px == want_px[i]);
+        assert_true(rel_err(we, want) < 1e-12);
+    }
+    /* The renderer's own hook: the splat's importance without 1 / cos^3. */
+    rt_path_settings flat = ps;
+    flat.neg.splat_drop_cos3 = true;
+    rt_bdpt_ctx cf = rt_bdpt_ctx_make(s, &flat, &cam);
+    double cos_c, we_c;
+    size_t px_c;
+    vec3 pc = through_film(&cp, FILM_W, FILM_H, 0.5, 0.5, 4.1, &cos_c);
+    bool seen_c = rt_bdpt_camera_importance(&cf, pc, &px_c, &we_c);
+    if (!negctl_record(nc, "importance without 1/cos^3", "importance closed form",
+                       seen_c && rel_err(we_c, importance_closed_form(a_pix, cos_c)) > 1e-3))
+        fail_msg("the importance without 1/cos^3 was not caught");
+    double cos_out, we_out;
+    size_t px_out;
+    assert_false(rt_bdpt_camera_importance(
+        &c, through_film(&cp, FILM_W, FILM_H, -0.01, 50.0, 2.0, &cos_out), &px_out, &we_out));
+
+    /* The cone about the view axis through the film's corners. */
+    double half_h = tan(0.5 * cp.vfov_deg * MC_PI / 180.0), half_w = half_h * FILM_W / FILM_H;
+    double cos_max = 1.0 / sqrt(1.0 + half_w * half_w + half_h * half_h) - 1e-3;
+    double cone = 2.0 * MC_PI * (1.0 - cos_max); /* its solid angle */
+    onb frame = onb_from_w(view_axis(&cp));
+    uint64_t seed = mc_test_seed(2101u);
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    mc_welford good = mc_welford_init(), bad = mc_welford_init();
+    for (int k = 0; k < 400000; k++) {
+        double ct = 1.0 - mc_rng_uniform(&rng) * (1.0 - cos_max), phi = 2.0 * MC_PI * mc_rng_uniform(&rng);
+        double st = sqrt(fmax(0.0, 1.0 - ct * ct));
+        vec3 d = onb_to_world(&frame, vec3_make(st * cos(phi), st * sin(phi), ct));
+        size_t px;
+        double we = 0.0;
+        bool in = rt_bdpt_camera_importance(&c, vec3_add(cp.lookfrom, vec3_scale(d, 5.0)), &px, &we);
+        double norm = cone / (double)(FILM_W * FILM_H);
+        mc_welford_add(&good, in ? we * norm : 0.0);
+        mc_welford_add(&bad, in ? norm / (a_pix * ct * ct * ct * ct) : 0.0);
+    }
+    mc_estimate eg = mc_welford_estimate(&good), eb = mc_welford_estimate(&bad);
+    printf("importance over the film's directions / (W H): %.6f +- %.6f; without the lens "
+           "cosine %.6f +- %.6f\n", eg.value, eg.std_error, eb.value, eb.std_error);
+    assert_z_below("importance integrates to 1 per pixel", eg.value, 1.0, eg.std_error, 4.0, seed);
+    if (!negctl_record(nc, "importance without the lens cosine", "normalisation z-test",
+                       fabs(eb.value - 1.0) / eb.std_error > 4.0))
+        fail_msg("the importance without the lens cosine was not caught");
+
+    /* The density per unit area through the weights. */
+    hand_path h = weight_path(0);
+    rt_material white = rt_lambertian(vec3_make(0.73, 0.73, 0.73));
+    rt_bdpt_vertex x[3];
+    renderer_path(&h, s, &c, &white, x);
+    double w1 = rt_bdpt_mis_weight(&c, x, 3, 1), w2 = rt_bdpt_mis_weight(&c, x, 3, 2);
+    double recovered = cosine_area_pdf(h.p[0], h.nrm[0], h.p[1], h.nrm[1]) * sqrt(w1 / w2);
+    double want = camera_area_pdf(&cp, film, h.p[1], h.nrm[1]);
+#if VALUES_BREAK == 2
+    want = camera_area_pdf(&cp, 4.0 * half_h * half_h, h.p[1], h.nrm[1]);
+#endif
+    double square = camera_area_pdf(&cp, 4.0 * half_h * half_h, h.p[1], h.nrm[1]);
+    printf("camera density per unit area at the floor point: %.10g, closed form %.10g "
+           "(square film: %.10g)\n", recovered, want, square);
+    assert_true(rel_err(recovered, want) < 1e-10);
+    if (!negctl_record(nc, "the camera density of a square film", "density per unit area",
+                       rel_err(recovered, square) > 1e-3))
+        fail_msg("the square film's density was not told apart");
+    rt_scene_destroy(s);
+}
+
+/* --- the furnace at the largest depth --------------------------------- */
+
+/* The furnace of these tests: albedo 0.9, so that paths of every length
+ * up to the deepest matter (0.9^63 = 1.3e-3 of the first bounce's). */
+#define FURNACE_E 0.5
+#define FURNACE_RHO 0.9
+enum { FURN_W = 8, FURN_H = 6, FURN_BATCHES = 8 };
+
+/* The radiance of paths of exactly k segments, E rho^(k - 1), and of all
+ * paths of at most D, the partial geometric sum E (1 - rho^D) / (1 - rho):
+ * every bounce inside the closed furnace reflects rho of what arrives. */
+static double furnace_exact_length(int k) { return FURNACE_E * pow(FURNACE_RHO, k - 1); }
+
+static double furnace_exact_upto(int depth)
+{
+    return FURNACE_E * (1.0 - pow(FURNACE_RHO, depth)) / (1.0 - FURNACE_RHO);
+}
+
+/* The mean over the image of one render of the furnace. */
+static double furnace_render(const rt_scene *f, rt_camera_params cp, rt_path_settings ps,
+                             uint64_t spp, uint64_t seed, rt_image *img)
+{
+    rt_render_job job = rt_render_job_default(f, rt_camera_make(cp, FURN_W, FURN_H));
+    job.path = ps;
+    job.spp = spp;
+    job.seed = seed;
+    job.threads = 2;
+    rt_render_stats st;
+    assert_int_equal(rt_render(&job, img, &st), 0);
+    assert_true(st.dropped == 0);
+    double sum = 0.0;
+    for (int k = 0; k < FURN_W * FURN_H; k++)
+        sum += img->px[k].mean[1];
+    return sum / (FURN_W * FURN_H);
+}
+
+/* max_depth = RT_BDPT_MAX_DEPTH (64), which the program's --max-depth
+ * allows the splatting strategies and no more (rt_bdpt_strategy_parse
+ * refuses a subpath past it). The strategies (s, t) with t >= 2 join two
+ * points of the sphere, whose geometry term cos cos / d^2 is 1 / (4 R^2)
+ * for every chord: each such estimate is exactly E rho^(s + t - 2), so
+ * (0, 65), (1, 64) and (32, 33) must give E rho^63 in every pixel to a
+ * relative 1e-9 (rounding only). The weighted sum, light tracing and
+ * (64, 1) (a splat of the 64th light vertex) are random: FURN_BATCHES
+ * renders of 8 x 6 pixels (4 spp weighted, 16 otherwise; seeds 2201 and
+ * on), statistic t = (mean of the image means - exact) / their standard
+ * error against Student's t with 7 degrees of freedom, Sidak-corrected
+ * over the 3 tests at a family false-alarm level of 1e-3 (|t| < 6.50).
+ * Negative control: the deterministic strategies against the closed form
+ * one depth short (E rho^62) must fail. */
+static void test_furnace_at_largest_depth(void **state)
+{
+    negctl *nc = *state;
+    int depth = RT_BDPT_MAX_DEPTH;
+    rt_path_settings probe = rt_path_settings_default(RT_MIXTURE);
+    assert_true(rt_bdpt_strategy_parse("bdpt:64,1", &probe));
+    assert_true(rt_bdpt_strategy_parse("bdpt:0,65", &probe));
+    assert_false(rt_bdpt_strategy_parse("bdpt:65,1", &probe));
+    assert_false(rt_bdpt_strategy_parse("bdpt:0,66", &probe));
+    rt_camera_params cp;
+    rt_scene *f = rt_scene_furnace(FURNACE_E, FURNACE_RHO, &cp);
+    assert_non_null(f);
+    rt_image *img = rt_image_create(FURN_W, FURN_H);
+    double exact_k = furnace_exact_length(depth), short_k = furnace_exact_length(depth - 1);
+#if VALUES_BREAK == 3
+    exact_k = short_k;
+#endif
+    static const int st_pairs[3][2] = {{0, 65}, {1, 64}, {32, 33}};
+    bool short_caught = true;
+    for (int i = 0; i < 3; i++) {
+        rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+        ps.max_depth = depth;
+        ps.bdpt_s = st_pairs[i][0];
+        ps.bdpt_t = st_pairs[i][1];
+        furnace_render(f, cp, ps, 2, 2200u, img);
+        double worst = 0.0;
+        for (int k = 0; k < FURN_W * FURN_H; k++)
+            worst = fmax(worst, rel_err(img->px[k].mean[1], exact_k));
+        short_caught = short_caught && rel_err(img->px[0].mean[1], short_k) > 1e-9;
+        printf("furnace bdpt:%d,%d at depth %d: pixel 0 %.15g, E rho^63 %.15g, largest relative "
+               "error %.2e\n", ps.bdpt_s, ps.bdpt_t, depth, img->px[0].mean[1], exact_k, worst);
+        assert_true(worst < 1e-9);
+    }
+    if (!negctl_record(nc, "furnace closed form one depth short", "deterministic strategies",
+                       short_caught))
+        fail_msg("E rho^62 was not told from E rho^63");
+
+    uint64_t seed = mc_test_seed(2201u);
+    double thr = gsl_cdf_tdist_Qinv(0.5 * mc_sidak_alpha(1e-3, 3), FURN_BATCHES - 1);
+    for (int i = 0; i < 3; i++) {
+        rt_path_settings ps = rt_path_settings_default(i == 1 ? RT_LIGHTTRACE : RT_BDPT);
+        ps.max_depth = depth;
+        double exact = furnace_exact_upto(depth);
+        if (i == 2) {
+            ps.bdpt_s = 64;
+            ps.bdpt_t = 1;
+            exact = furnace_exact_length(depth);
+        }
+#if VALUES_BREAK == 3
+        exact = i == 2 ? furnace_exact_length(depth - 1) : furnace_exact_upto(depth) * 1.05;
+#endif
+        mc_welford acc = mc_welford_init();
+        for (int b = 0; b < FURN_BATCHES; b++)
+            mc_welford_add(&acc, furnace_render(f, cp, ps, i == 0 ? 4 : 16,
+                                                seed + 10u * (uint64_t)i + (uint64_t)b, img));
+        mc_estimate e = mc_welford_estimate(&acc);
+        double t = (e.value - exact) / e.std_error;
+        printf("furnace %s at depth %d: %.6g +- %.2g, exact %.6g, |t| %.2f (threshold %.2f)\n",
+               i == 0 ? "bdpt" : i == 1 ? "lighttrace" : "bdpt:64,1", depth, e.value, e.std_error,
+               exact, fabs(t), thr);
+        assert_seeded(fabs(t) < thr, seed);
+    }
+    rt_image_destroy(img);
+    rt_scene_destroy(f);
+}
+
+/* --- the rays of the families estimated apart ------------------------- */
+
+/* The most rays one call of rt_bdpt_seen_emission with `left` segments
+ * and `splits` splits can trace: a ray, then at glass both branches
+ * while splits last (one fewer for each), else one branch:
+ *   f(L, 0) = L,  f(L, S) = 1 + 2 f(L - 1, S - 1),
+ * i.e. f(L, S) = 2^S (L - S + 1) - 1 for L >= S (2^L - 1 below): the
+ * first S levels a full binary tree of 2^S - 1 rays, then 2^S chains of
+ * L - S rays. A mirror (1 + f(L - 1, S)) traces fewer: 2^S - 1 fewer. */
+static uint64_t seen_max(int left, int splits)
+{
+    if (left < 1)
+        return 0;
+    if (left < splits)
+        return ((uint64_t)1 << left) - 1u;
+    return ((uint64_t)1 << splits) * (uint64_t)(left - splits + 1) - 1u;
+}
+
+/* The scene where every ray's fate is known: a glass ball of radius 1
+ * (index 1.5) inside a perfect mirror sphere of radius 2, both about the
+ * origin, the camera at the origin. Every ray from the centre is radial
+ * and stays radial: a radial ray meets the glass or the mirror at normal
+ * incidence, where the glass's Fresnel reflectance is
+ * ((1.5 - 1) / (1.5 + 1))^2 = 0.04 (in (0, 1): both branches exist) and
+ * the mirror sends it straight back. Nothing is ever missed or absorbed. */
+static rt_scene *radial_scene(rt_camera_params *cp)
+{
+    rt_scene *s = rt_scene_create();
+    int glass = rt_scene_add_material(s, rt_dielectric(1.5, RT_FRESNEL_SCHLICK));
+    int mirror = rt_scene_add_material(s, rt_metal(vec3_make(0.9, 0.9, 0.9), 0.0));
+    vec3 o = vec3_make(0.0, 0.0, 0.0);
+    rt_scene_add(s, rt_scene_sphere(s, o, 1.0, glass));
+    rt_scene_add(s, rt_scene_sphere(s, o, 2.0, mirror));
+    assert_int_equal(rt_scene_build(s), 0);
+    *cp = (rt_camera_params){o, vec3_make(0.0, 0.0, 1.0), vec3_make(0.0, 1.0, 0.0), 60.0};
+    return s;
+}
+
+/* Where a radial ray is in the radial scene: inside the glass (it meets
+ * the glass from inside next), outside going out (the mirror next),
+ * outside coming in (the glass from outside next). */
+typedef enum radial { IN_GLASS, OUT_GOING, OUT_COMING } radial;
+
+/* The rays rt_bdpt_seen_emission traces for a radial ray in state r with
+ * `left` segments and `splits` splits to go: one for this segment, then
+ * at glass both branches (reflection keeps the side, refraction crosses
+ * it) while splits last, else one of them (either: every branch goes on
+ * to the end); at the mirror the ray comes back. */
+static uint64_t radial_rays(radial r, int left, int splits)
+{
+    if (left < 1)
+        return 0;
+    if (r == OUT_GOING)
+        return 1u + radial_rays(OUT_COMING, left - 1, splits);
+    radial refl = r == IN_GLASS ? IN_GLASS : OUT_GOING, refr = r == IN_GLASS ? OUT_GOING : IN_GLASS;
+    if (splits == 0)
+        return (uint64_t)left; /* one ray per segment to the end */
+    return 1u + radial_rays(refl, left - 1, splits - 1) + radial_rays(refr, left - 1, splits - 1);
+}
+
+/* The exact ray count of a weighted render of the radial scene: W x H
+ * pixels, spp samples, depth D <= RT_BDPT_MAX_DEPTH. Per pixel, the edge test traces the
+ * seen term of 9 rays, c = radial_rays(IN_GLASS, D, S) each (no pixel is
+ * an edge: nothing emits). Per sample: the camera subpath, D rays (it
+ * never ends early), and the seen term from its first hit, c - 1 (the
+ * hit itself is the subpath's); no light subpath (no emitter), no join,
+ * no split rays at a Lambertian vertex (there is none). */
+static uint64_t radial_render_rays(int w, int h, uint64_t spp, int depth, int splits)
+{
+    int d = depth;
+    uint64_t c = radial_rays(IN_GLASS, d, splits), pixels = (uint64_t)w * (uint64_t)h;
+    return pixels * 9u * c + pixels * spp * ((uint64_t)d + c - 1u);
+}
+
+/* The radial scene: one seen term from the centre traces exactly
+ * radial_rays(IN_GLASS, D, RT_BDPT_SPLITS) rays (D = 64 and 7), and a
+ * weighted render of 6 x 4 pixels, 3 spp, at depth 64 and 7 traces
+ * exactly radial_render_rays; at depth 65 the render is refused (its
+ * subpaths would not fit RT_BDPT_MAX_DEPTH). Negative controls:
+ * the counts with one split level fewer, and without splitting, must
+ * differ from the measured ones. */
+static void test_seen_rays_exact(void **state)
+{
+    negctl *nc = *state;
+    rt_camera_params cp;
+    rt_scene *s = radial_scene(&cp);
+    enum { RW = 6, RH = 4, RSPP = 3 };
+    rt_camera cam = rt_camera_make(cp, RW, RH);
+    int splits = RT_BDPT_SPLITS;
+#if VALUES_BREAK == 4
+    splits = RT_BDPT_SPLITS - 1;
+#endif
+    bool caught = true;
+    static const int depths[2] = {RT_BDPT_MAX_DEPTH, 7};
+    for (int i = 0; i < 2; i++) {
+        rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+        ps.max_depth = depths[i];
+        rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam);
+        mc_rng rng = mc_rng_derive(2301u, (uint64_t)i);
+        uint64_t seg = 0;
+        vec3 L = rt_bdpt_seen_emission(&c, rt_camera_ray(&cam, 1.3, 2.6), &rng, &seg);
+        uint64_t want = radial_rays(IN_GLASS, depths[i], splits);
+        printf("radial scene, depth %d: one seen term traced %llu rays, model %llu, bound %llu\n",
+               depths[i], (unsigned long long)seg, (unsigned long long)want,
+               (unsigned long long)seen_max(depths[i], RT_BDPT_SPLITS));
+        assert_true(L.x == 0.0 && seg == want && seg <= seen_max(depths[i], RT_BDPT_SPLITS));
+        caught = caught && seg != radial_rays(IN_GLASS, depths[i], RT_BDPT_SPLITS - 1) &&
+                 seg != (uint64_t)depths[i];
+    }
+    static const int render_depths[2] = {RT_BDPT_MAX_DEPTH, 7};
+    rt_image *img = rt_image_create(RW, RH);
+    for (int i = 0; i < 3; i++) {
+        rt_render_job job = rt_render_job_default(s, cam);
+        job.path = rt_path_settings_default(RT_BDPT);
+        job.path.max_depth = i < 2 ? render_depths[i] : RT_BDPT_MAX_DEPTH + 1;
+        job.spp = RSPP;
+        job.threads = 2;
+        rt_render_stats st;
+        if (i == 2) { /* past the subpath buffers: refused */
+            assert_int_equal(rt_render(&job, img, &st), -1);
+            break;
+        }
+        assert_int_equal(rt_render(&job, img, &st), 0);
+        uint64_t want = radial_render_rays(RW, RH, RSPP, render_depths[i], splits);
+        printf("radial scene render at depth %d: %llu rays, exact %llu\n", render_depths[i],
+               (unsigned long long)st.segments, (unsigned long long)want);
+        assert_true(st.paths == (uint64_t)RW * RH * RSPP);
+        assert_true(st.segments == want);
+        caught = caught && st.segments != radial_render_rays(RW, RH, RSPP, render_depths[i],
+                                                              RT_BDPT_SPLITS - 1);
+    }
+    if (!negctl_record(nc, "seen-term ray counts one split level short or unsplit",
+                       "exact ray count", caught))
+        fail_msg("a ray count with the wrong number of splits was not told apart");
+    rt_image_destroy(img);
+    rt_scene_destroy(s);
+}
+
+/* The most rays of one sample of rt_bdpt_sample (weighted, seen_here) at
+ * depth D (S = RT_BDPT_SPLITS): the camera subpath D, the light subpath
+ * D - 1 (its start is drawn, not traced), one shadow ray per join
+ * (s >= 1, t >= 2, s + t - 1 <= D: D (D - 1) / 2 of them), one per splat
+ * (s = 2 .. D; (1, 1) is left out), the seen term from the first hit
+ * (at most 2 f(D - 1, S - 1) = f(D, S) - 1), and the split rays at the
+ * first Lambertian vertex after glass (index jd >= 2):
+ * RT_BDPT_THROUGH_RAYS f(D - 2, S). */
+static uint64_t sample_core(int d)
+{
+    uint64_t D = (uint64_t)d;
+    return D + (D - 1u) + D * (D - 1u) / 2u + (D - 1u);
+}
+
+static uint64_t sample_max(int d)
+{
+#if VALUES_BREAK == 4
+    return sample_core(d); /* the families' rays left out */
+#else
+    return sample_core(d) + seen_max(d, RT_BDPT_SPLITS) - 1u +
+           (uint64_t)RT_BDPT_THROUGH_RAYS * seen_max(d - 2, RT_BDPT_SPLITS);
+#endif
+}
+
+/* The book's scene (glass sphere, lamp) at depth 64 and 6: every sample
+ * of rt_bdpt_sample traces at most sample_max(D) rays, every edge term
+ * rt_bdpt_seen_sample at most RT_BDPT_EDGE_SUBSAMPLES f(D, S) and every
+ * edge test rt_bdpt_seen_edge at most 9 f(D, S); and a weighted render
+ * (12 x 12 pixels, 2 spp) at most paths x (sample_max + 64 f(D, S)) +
+ * pixels x 9 f(D, S) in its stats. 12 x 12 x 2 direct samples per depth
+ * from pixel streams derived from seed 2401. Negative control: at depth
+ * 6 some sample traces more rays than the subpaths, joins and splats
+ * alone may (the families' rays are not negligible), and some edge term
+ * more than 64 unsplit chains of D rays. */
+static void test_seen_rays_bounded(void **state)
+{
+    negctl *nc = *state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    enum { BW = 12, BSPP = 2 };
+    rt_camera cam = rt_camera_make(cp, BW, BW);
+    uint64_t seed = mc_test_seed(2401u);
+    static const int depths[2] = {RT_BDPT_MAX_DEPTH, 6};
+    rt_splats *splat = rt_splats_create(BW, BW);
+    assert_non_null(splat);
+    for (int i = 0; i < 2; i++) {
+        int d = depths[i];
+        rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+        ps.max_depth = d;
+        rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam);
+        uint64_t f = seen_max(d, RT_BDPT_SPLITS), most = 0, most_edge = 0, most_test = 0;
+        for (int y = 0; y < BW; y++)
+            for (int x = 0; x < BW; x++) {
+                uint64_t idx = (uint64_t)y * BW + (uint64_t)x, seg = 0;
+                rt_sampler sampler = rt_sampler_from_rng(mc_rng_derive(seed, idx));
+                (void)rt_bdpt_seen_edge(&c, x, y, seed, &seg);
+                most_test = seg > most_test ? seg : most_test;
+                for (uint64_t k = 0; k < BSPP; k++) {
+                    mc_rng aux = rt_bdpt_aux_stream(seed, idx * BSPP + k);
+                    rt_ray r = rt_camera_ray(&cam, x + mc_rng_uniform(&sampler.rng),
+                                             y + mc_rng_uniform(&sampler.rng));
+                    seg = 0;
+                    rt_bdpt_sample(&c, r, &sampler, &aux, true, splat, &seg);
+                    most = seg > most ? seg : most;
+                    seg = 0;
+                    rt_bdpt_seen_sample(&c, x, y, &aux, &seg);
+                    most_edge = seg > most_edge ? seg : most_edge;
+                }
+            }
+        printf("book, depth %d: most rays of a sample %llu (bound %llu), of an edge term %llu "
+               "(bound %llu), of an edge test %llu (bound %llu)\n", d, (unsigned long long)most,
+               (unsigned long long)sample_max(d), (unsigned long long)most_edge,
+               (unsigned long long)(RT_BDPT_EDGE_SUBSAMPLES * f), (unsigned long long)most_test,
+               (unsigned long long)(9u * f));
+        assert_true(most <= sample_max(d));
+        assert_true(most_edge <= RT_BDPT_EDGE_SUBSAMPLES * f);
+        assert_true(most_test <= 9u * f);
+
+        rt_render_job job = rt_render_job_default(s, cam);
+        job.path = ps;
+        job.spp = BSPP;
+        job.seed = seed;
+        job.threads = 2;
+        rt_image *img = rt_image_create(BW, BW);
+        rt_render_stats st;
+        assert_int_equal(rt_render(&job, img, &st), 0);
+        uint64_t bound = st.paths * (sample_max(d) + RT_BDPT_EDGE_SUBSAMPLES * f) +
+                         (uint64_t)BW * BW * 9u * f;
+        printf("book render, depth %d: %llu rays for %llu samples, bound %llu\n", d,
+               (unsigned long long)st.segments, (unsigned long long)st.paths,
+               (unsigned long long)bound);
+        assert_true(st.segments <= bound);
+        if (d == 6 && !negctl_record(nc, "ray bound without the families or without splits",
+                                     "per-sample ray bound",
+                                     most > sample_core(d) &&
+                                         most_edge > (uint64_t)RT_BDPT_EDGE_SUBSAMPLES * (uint64_t)d))
+            fail_msg("a bound that leaves out the families' rays was not exceeded");
+        rt_image_destroy(img);
+    }
+    rt_splats_destroy(splat);
+    rt_scene_destroy(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_mis_weights_by_hand),
+        cmocka_unit_test(test_camera_importance_and_density),
+        cmocka_unit_test(test_furnace_at_largest_depth),
+        cmocka_unit_test(test_seen_rays_exact),
+        cmocka_unit_test(test_seen_rays_bounded),
+    };
+    mc_test_select();
+    return cmocka_run_group_tests_name("test_render_values", tests, negctl_group_setup,
+                                       negctl_group_teardown);
+}
