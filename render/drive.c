@@ -1,13 +1,14 @@
 /* render/drive.c - the one loop over the image: passes, per-pixel
  * streams, rows shared by OpenMP threads, cancel, progress and
  * statistics, for every strategy; the row kernels of render/row.h do the
- * rest. This is the only file of the renderer that knows render/fast/. */
+ * rest. The four-lane kernel comes through the one door to render/fast/,
+ * render/engine.h. */
 #include "render/render.h"
 
 #include <omp.h>
 #include <stdlib.h>
 
-#include "render/fast/rows.h"
+#include "render/engine.h"
 #include "render/jitter.h"
 #include "render/lighttrace.h"
 #include "render/row.h"
@@ -101,7 +102,7 @@ static row_kernel kernel_of(const rt_render_job *job)
     if (rt_strategy_splats(job->path.strategy))
         return rt_row_splat;
     if (rt_path_steppable(&job->path) && !job->one_path_at_a_time)
-        return rt_fast_render_row;
+        return rt_engine_get()->row4;
     return rt_row_reference;
 }
 

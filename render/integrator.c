@@ -6,7 +6,6 @@
 
 #include "mc/constants.h"
 #include "mc/onb.h"
-#include "render/fast/lights4.h"
 #include "render/names.h"
 #include "samplers/hemisphere.h"
 
@@ -272,13 +271,16 @@ bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps)
     return ps->strategy == RT_MIXTURE && !ps->pdf_objects && rt_scene_light_count(s) > 0;
 }
 
-vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const rt_lights4 *at4,
-                  int k, rt_sampler *sampler)
+bool rt_path_draws_light(const rt_path_settings *ps, rt_sampler *sampler)
 {
-    /* mixture_draw with the lights prepared in lane k of at4. */
+    /* mixture_draw's choice of component, the same uniform. */
     (void)ps;
-    return rt_sampler_1d(sampler) < mixture_weights[0] ? rt_lights4_generate(at4, k, sampler)
-                                                       : material_generate(&v->sr, sampler);
+    return rt_sampler_1d(sampler) < mixture_weights[0];
+}
+
+vec3 rt_path_draw_material(const rt_path_vertex *v, rt_sampler *sampler)
+{
+    return material_generate(&v->sr, sampler);
 }
 
 void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,

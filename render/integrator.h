@@ -166,15 +166,16 @@ void rt_path_continue(const rt_scene *s, const rt_path_settings *ps, rt_path_sta
                       const rt_path_vertex *v, rt_sampler *sampler);
 
 /* True when rt_path_continue is the chapter-8 mixture with the fast
- * densities of render/lights.h: then it may also be done in three parts,
- * with the light list prepared at the vertices of four paths and
- * evaluated by the caller (render/fast/lights4.h): dir = rt_path_draw(v, at4,
- * lane), value = the light list's density at dir (rt_lights4_value),
- * rt_path_finish(v, dir, value). The same numbers as rt_path_continue. */
-struct rt_lights4;
+ * densities of render/lights.h: then it may also be done in parts, with
+ * the light list prepared at the vertices of several paths and evaluated
+ * by the caller: the direction is drawn from the light list (by the
+ * caller, from the same sampler) when rt_path_draws_light(ps, sampler),
+ * else dir = rt_path_draw_material(v, sampler); then value = the light
+ * list's density at dir, and rt_path_finish(v, dir, value). The same
+ * numbers as rt_path_continue. */
 bool rt_path_batches_lights(const rt_scene *s, const rt_path_settings *ps);
-vec3 rt_path_draw(const rt_path_settings *ps, const rt_path_vertex *v, const struct rt_lights4 *at4,
-                  int k, rt_sampler *sampler);
+bool rt_path_draws_light(const rt_path_settings *ps, rt_sampler *sampler);
+vec3 rt_path_draw_material(const rt_path_vertex *v, rt_sampler *sampler);
 void rt_path_finish(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
                     vec3 dir, double light_value, rt_sampler *sampler);
 

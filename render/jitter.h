@@ -6,7 +6,8 @@
  * plain uniform points. The cells are visited in a scrambled order (a
  * stride coprime to the cell count), so that any prefix of a pixel's
  * samples is spread over the pixel. Shared by the reference row loop
- * (render/render.c) and the fast one (render/fast/rows.c). The samplers
+ * (render/row.c), the fast one (render/fast/rows.c) and the splat one
+ * (render/lighttrace.c). The samplers
  * other than the default stratified one (render/sampler.h) use no cells:
  * their pixel position is the sampler's first 2D as it is.
  */

@@ -1,8 +1,6 @@
 /* render/lighttrace.c - the row kernel of the strategies that splat. */
 #include "render/lighttrace.h"
 
-#include "render/row.h"
-
 /* BEGIN SNIPPET splat_row */
 rt_row_counts rt_row_splat(const rt_row *r)
 {

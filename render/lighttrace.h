@@ -27,8 +27,15 @@
 #ifndef RT_LIGHTTRACE_H
 #define RT_LIGHTTRACE_H
 
+#include "render/row.h"
+
 /* The most splat sums a render keeps, one per thread (48 bytes per pixel
  * each): also the most threads that render these strategies at once. */
 #define RT_SPLAT_BUFFERS 8
+
+/* The splat kernel (render/row.h), for a job whose strategy splats
+ * (rt_strategy_splats): each pixel sample's camera subpath goes to its
+ * pixel, its light subpath's splats to r->splats. */
+rt_row_counts rt_row_splat(const rt_row *r);
 
 #endif /* RT_LIGHTTRACE_H */

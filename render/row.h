@@ -5,11 +5,11 @@
  * statistics. A kernel renders samples [k0, k1) of every pixel of one
  * row, consuming each pixel's stream in sample order and leaving it where
  * the next pass continues; it never sees the other rows. Three kernels:
- * - rt_row_reference (render/render.c): one path after the other, every
+ * - rt_row_reference (render/row.c): one path after the other, every
  *   strategy that does not splat;
  * - rt_fast_render_row (render/fast/rows.h): the book's integrator four
  *   paths at a time, the same bits;
- * - rt_row_splat (render/lighttrace.c): light tracing and bidirectional
+ * - rt_row_splat (render/lighttrace.h): light tracing and bidirectional
  *   path tracing, whose light paths splat onto any pixel.
  * Internal to the renderer; programs call render/render.h.
  */
@@ -49,10 +49,5 @@ typedef struct rt_row_counts {
 /* The reference kernel: samples [k0, k1) of every pixel of row y, one
  * path at a time (rt_radiance). */
 rt_row_counts rt_row_reference(const rt_row *r);
-
-/* The splat kernel, for a job whose strategy splats
- * (rt_strategy_splats): each pixel sample's camera subpath goes to its
- * pixel, its light subpath's splats to r->splats. */
-rt_row_counts rt_row_splat(const rt_row *r);
 
 #endif /* RT_ROW_H */

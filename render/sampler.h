@@ -23,7 +23,7 @@
  *                          them independent of one another, so the
  *                          estimate stays unbiased.
  * The two PCG32 kinds draw one PCG32 output per uniform, in the order of
- * the requests, from a stream continued over the passes (render/render.c).
+ * the requests, from a stream continued over the passes (render/drive.c).
  *
  * Dimensions of a Sobol sample: the pixel position takes 0 and 1; the
  * draws made for the vertex after segment d (the scattering there, the

@@ -5,7 +5,6 @@
 #include <string.h>
 
 #include "mc/constants.h"
-#include "render/fast/hit4.h"
 
 typedef enum node_kind { NODE_PRIM, NODE_LIST, NODE_TRANSLATE, NODE_ROTATE_Y, NODE_FLIP } node_kind;
 
@@ -36,8 +35,8 @@ struct rt_scene {
     rt_prim *prims;
     int n_prims, cap_prims;
     rt_bvh bvh;
-    rt_leaf_lanes *lanes; /* the root leaf for the fast path, NULL if none */
-    rt_isa isa;           /* rt_isa_best(), for rt_scene_hit */
+    rt_leaf_lanes *lanes; /* the root leaf in lanes, NULL if none */
+    rt_leaf_tests leaf;   /* the tests that read them (none: the BVH alone) */
     rt_prim lights[RT_MAX_LIGHTS];
     rt_light fast_lights[RT_MAX_LIGHTS];
     int n_lights;
@@ -312,8 +311,7 @@ int rt_scene_build(rt_scene *s)
         !materials_valid(s, s->lights, s->n_lights) ||
         rt_bvh_build(&s->bvh, s->prims, s->n_prims) != 0)
         return -1;
-    /* A tree that is one leaf (a small scene) is also laid out for the
-     * fast path's four-ray and one-ray tests. */
+    /* One leaf (a small scene): laid out for the four-wide leaf tests. */
     if (s->bvh.nodes[0].count > 0 && !(s->lanes = rt_leaf_lanes_create(s->prims, s->n_prims)))
         return -1;
     for (int i = 0; i < s->n_lights; i++) {
@@ -323,7 +321,6 @@ int rt_scene_build(rt_scene *s)
             s->fast_emitters[s->n_emitters++] = s->fast_lights[i];
         }
     }
-    s->isa = rt_isa_best();
     s->built = true;
     return 0;
 }
@@ -332,7 +329,12 @@ int rt_scene_build(rt_scene *s)
 
 bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
 {
-    return rt_leaf_lanes_hit1(s->isa, s->lanes, &s->bvh, s->prims, &r, s->t_min, tmax, h);
+    return rt_leaf_lanes_hit1(&s->leaf, s->lanes, &s->bvh, s->prims, &r, s->t_min, tmax, h);
+}
+
+unsigned rt_scene_hit4(const rt_scene *s, const rt_ray r[RT_LANES], double tmax, rt_hit h[RT_LANES])
+{
+    return rt_leaf_lanes_hit(&s->leaf, s->lanes, &s->bvh, s->prims, r, s->t_min, tmax, h);
 }
 
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
@@ -410,7 +412,6 @@ bool rt_scene_hit_tree(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
 }
 
 const rt_material *rt_scene_material(const rt_scene *s, int m) { return &s->materials[m]; }
-
 int rt_scene_light_count(const rt_scene *s) { return s->n_lights; }
 
 /* The pdf list toward the n primitives lights[0..n). */
@@ -445,4 +446,5 @@ vec3 rt_scene_background(const rt_scene *s) { return s->background; }
 int rt_scene_prim_count(const rt_scene *s) { return s->n_prims; }
 const rt_prim *rt_scene_prims(const rt_scene *s) { return s->prims; }
 const rt_bvh *rt_scene_bvh(const rt_scene *s) { return &s->bvh; }
-const struct rt_leaf_lanes *rt_scene_leaf_lanes(const rt_scene *s) { return s->lanes; }
+const rt_leaf_lanes *rt_scene_leaf_lanes(const rt_scene *s) { return s->lanes; }
+void rt_scene_use_leaf_tests(rt_scene *s, rt_leaf_tests t) { s->leaf = t; }

@@ -27,6 +27,7 @@
 #include "mc/vec3.h"
 #include "pdf/pdf.h"
 #include "render/bvh.h"
+#include "render/leaf4.h"
 #include "render/lights.h"
 #include "render/material.h"
 #include "render/ray.h"
@@ -89,10 +90,23 @@ void rt_scene_set_background(rt_scene *s, vec3 radiance);
  * after every object was added and before any query. */
 int rt_scene_build(rt_scene *s);
 
+/* The four-wide tests of the root leaf (render/leaf4.h) that the queries
+ * below use from now on; a built scene starts with none (the BVH alone,
+ * the reference), and the engine's (render/engine.h) give the same bits
+ * sooner. render/scenes.c gives its scenes the engine's. Call after a
+ * successful build, before any query runs. */
+void rt_scene_use_leaf_tests(rt_scene *s, rt_leaf_tests t);
+
 /* The closest hit of r with t in (t_min, tmax), through the BVH: for a
- * root leaf, the fast path's one-ray test (rt_leaf_lanes_hit1, with the
- * instruction set of rt_isa_best), the same bits as the reference. */
+ * root leaf, the scene's one-ray test if it has one (rt_leaf_lanes_hit1),
+ * the same bits as the reference. */
 bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
+
+/* rt_scene_hit for RT_LANES rays at once, through rt_leaf_lanes_hit and
+ * the scene's four-ray test if it has one: bit k of the result says
+ * whether r[k] hit, and then h[k] is its record. */
+unsigned rt_scene_hit4(const rt_scene *s, const rt_ray r[RT_LANES], double tmax,
+                       rt_hit h[RT_LANES]);
 
 /* The same by testing every flattened primitive (reference). */
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
@@ -139,8 +153,8 @@ int rt_scene_prim_count(const rt_scene *s);
 const rt_prim *rt_scene_prims(const rt_scene *s);
 const rt_bvh *rt_scene_bvh(const rt_scene *s);
 
-/* The root leaf laid out for the fast path's four-ray test
- * (render/fast/hit4.h), NULL when the root is not a leaf. */
-const struct rt_leaf_lanes *rt_scene_leaf_lanes(const rt_scene *s);
+/* The root leaf laid out in lanes (render/leaf4.h), NULL when the root is
+ * not a leaf. */
+const rt_leaf_lanes *rt_scene_leaf_lanes(const rt_scene *s);
 
 #endif /* RT_SCENE_H */

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "mc/constants.h"
+#include "render/engine.h"
 #include "render/names.h"
 
 /* The scenes of rt_scene_named, each bound to its name here. */
@@ -15,6 +16,18 @@ const char *const rt_scene_names[] = {
 };
 
 static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
+
+/* s built, with the engine's leaf tests (the same bits as none, sooner);
+ * NULL, and s freed, when the build fails. */
+static rt_scene *built(rt_scene *s)
+{
+    if (rt_scene_build(s) != 0) {
+        rt_scene_destroy(s);
+        return NULL;
+    }
+    rt_scene_use_leaf_tests(s, rt_engine_get()->leaf);
+    return s;
+}
 
 /* BEGIN SNIPPET cornell_room */
 int rt_scene_cornell_room(rt_scene *s, rt_camera_params *cam)
@@ -64,11 +77,7 @@ static rt_scene *cornell(bool metal, bool lambert, rt_camera_params *cam)
         rt_scene_add(s, ball);
         rt_scene_add_light(s, ball);
     }
-    if (rt_scene_build(s) != 0) {
-        rt_scene_destroy(s);
-        return NULL;
-    }
-    return s;
+    return built(s);
 }
 /* END SNIPPET cornell_book_scene */
 
@@ -97,11 +106,7 @@ rt_scene *rt_scene_furnace(double emission, double rho, rt_camera_params *cam)
     cam->lookat = v3(0, 0, 1);
     cam->vup = v3(0, 1, 0);
     cam->vfov_deg = 90.0;
-    if (rt_scene_build(s) != 0) {
-        rt_scene_destroy(s);
-        return NULL;
-    }
-    return s;
+    return built(s);
 }
 /* END SNIPPET furnace_scene */
 
@@ -129,11 +134,7 @@ rt_scene *rt_scene_sphere_light(double phi, double r, double h, double half, dou
     cam->lookat = v3(0, 0, 0);
     cam->vup = v3(0, 1, 0);
     cam->vfov_deg = 60.0;
-    if (rt_scene_build(s) != 0) {
-        rt_scene_destroy(s);
-        return NULL;
-    }
-    return s;
+    return built(s);
 }
 
 rt_scene *rt_scene_named(const char *name, rt_camera_params *cam)

@@ -24,7 +24,9 @@
 extern const char *const rt_scene_names[];
 
 /* Builds the named scene and sets *cam to its camera. NULL for an unknown
- * name or when out of memory. The result is built (rt_scene_build). */
+ * name or when out of memory. The result is built (rt_scene_build), with
+ * the engine's leaf tests (render/engine.h), as is every built scene this
+ * header returns. */
 rt_scene *rt_scene_named(const char *name, rt_camera_params *cam);
 
 /* The Cornell room: the five walls, the light and its light-list entry,

@@ -327,6 +327,46 @@ static void test_cli_samplers_thread_count(void **state)
     remove(p2);
 }
 
+/* The run mode without instruction-set code (MCBOX_ISA=portable,
+ * render/engine.h) writes the same bytes as the default engine, for every
+ * strategy on the three Cornell scenes; tests/test_render_engine.c shows
+ * that the variable does select the portable engine. */
+static void test_cli_portable_engine_same_bytes(void **state)
+{
+    (void)state;
+    char out[4096], err[4096], args[2048], p1[1024], p2[1024], b1[65536], b2[65536];
+    const char *b = mc_test_build_dir();
+    static const char *const scenes[] = {"book", "book-metal", "lambert"};
+    static const char *const strategies[] = {"uniform", "cosine", "light", "mixture", "mis",
+                                             "lighttrace", "bdpt", "bdpt --roulette"};
+    snprintf(p1, sizeof p1, "%s/cli_isa1.pfm", b);
+    snprintf(p2, sizeof p2, "%s/cli_isa2.pfm", b);
+    int compared = 0;
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++)
+        for (size_t j = 0; j < sizeof strategies / sizeof strategies[0]; j++) {
+            snprintf(args, sizeof args, "--scene %s --width 16 --spp 6 --strategy %s -o %s", scenes[i],
+                     strategies[j], p1);
+            assert_int_equal(run(args, out, sizeof out, err, sizeof err), 0);
+            /* run() puts the program's path first: the variable goes in
+             * through the environment of this process, which the shell
+             * passes on. */
+            assert_int_equal(setenv("MCBOX_ISA", "portable", 1), 0);
+            snprintf(args, sizeof args, "--scene %s --width 16 --spp 6 --strategy %s -o %s", scenes[i],
+                     strategies[j], p2);
+            int rc = run(args, out, sizeof out, err, sizeof err);
+            assert_int_equal(unsetenv("MCBOX_ISA"), 0);
+            assert_int_equal(rc, 0);
+            long n1 = slurp(p1, b1, sizeof b1), n2 = slurp(p2, b2, sizeof b2);
+            if (n1 <= 0 || n1 != n2 || memcmp(b1, b2, (size_t)n1) != 0)
+                fail_msg("--scene %s --strategy %s: MCBOX_ISA=portable writes other bytes", scenes[i],
+                         strategies[j]);
+            compared++;
+        }
+    printf("MCBOX_ISA=portable = the default engine, byte for byte, in %d renders\n", compared);
+    remove(p1);
+    remove(p2);
+}
+
 /* --reference: against the image the same command wrote, the RMSE is
  * only the float rounding of the file (below 1e-6 of values near 1);
  * against another seed's, it is positive; a missing file, a file that is
@@ -415,6 +455,7 @@ int main(void)
         cmocka_unit_test(test_cli_furnace_prints_exact),
         cmocka_unit_test(test_cli_samplers_thread_count),
         cmocka_unit_test(test_cli_reference),
+        cmocka_unit_test(test_cli_portable_engine_same_bytes),
     };
     return cmocka_run_group_tests_name("test_render_cli", tests, NULL, NULL);
 }

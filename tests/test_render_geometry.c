@@ -10,11 +10,20 @@
 #include "mc/constants.h"
 #include "mc/rng.h"
 #include "render/bvh.h"
+#include "render/engine.h"
 #include "render/fast/hit4.h"
 #include "render/camera.h"
 #include "render/scene.h"
 #include "render/scenes.h"
 #include "samplers/sphere.h"
+
+/* Builds s and gives it the engine's leaf tests, as render/scenes.c does
+ * for its scenes: the renderer's entry points then run what it runs. */
+static void build_with_engine(rt_scene *s)
+{
+    assert_int_equal(rt_scene_build(s), 0);
+    rt_scene_use_leaf_tests(s, rt_engine_get()->leaf);
+}
 
 static vec3 v3(double x, double y, double z) { return vec3_make(x, y, z); }
 
@@ -56,7 +65,7 @@ static void test_box_faces_outward(void **state)
     rt_scene *s = rt_scene_create();
     int m = rt_scene_add_material(s, rt_lambertian(v3(0.5, 0.5, 0.5)));
     rt_scene_add(s, rt_scene_box(s, v3(-1, -2, -3), v3(1, 2, 3), m));
-    assert_int_equal(rt_scene_build(s), 0);
+    build_with_engine(s);
     vec3 dirs[6] = {v3(1, 0, 0), v3(-1, 0, 0), v3(0, 1, 0), v3(0, -1, 0), v3(0, 0, 1), v3(0, 0, -1)};
     for (int i = 0; i < 6; i++) {
         rt_hit h;
@@ -81,7 +90,7 @@ static void test_instances_known(void **state)
     rt_object ball = rt_scene_sphere(s, v3(3, 0, 0), 1.0, m);
     rt_object moved = rt_scene_translate(s, rt_scene_rotate_y(s, ball, 90.0), v3(0, 5, 0));
     rt_scene_add(s, rt_scene_flip(s, moved));
-    assert_int_equal(rt_scene_build(s), 0);
+    build_with_engine(s);
     rt_hit h, t;
     rt_ray r = rt_ray_make(v3(0, 5, 0), v3(0, 0, -1));
     assert_true(rt_scene_hit(s, r, HUGE_VAL, &h));
@@ -185,10 +194,12 @@ static rt_ray axis_ray(mc_rng *rng, vec3 lo, vec3 hi)
     return rt_ray_make(v3(o[0], o[1], o[2]), vec3_normalize(v3(c[0], c[1], c[2])));
 }
 
-/* rt_leaf_lanes_hit with instruction set isa (rt_scene_hit4 with the
- * best for RT_ISA_COUNT: the renderer's entry) against rt_bvh_hit. */
+/* rt_leaf_lanes_hit with the tests of instruction set isa
+ * (rt_fast_leaf_tests; for RT_ISA_COUNT rt_scene_hit4 with the scene's
+ * own, the engine's: the renderer's entry) against rt_bvh_hit. */
 static int check_hit4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed, int isa)
 {
+    rt_leaf_tests tests = rt_fast_leaf_tests(isa == RT_ISA_COUNT ? RT_ISA_PORTABLE : (rt_isa)isa);
     mc_rng rng = mc_rng_derive(seed, 0u);
     const rt_prim *prims = rt_scene_prims(s);
     const rt_bvh *b = rt_scene_bvh(s);
@@ -199,8 +210,8 @@ static int check_hit4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, ui
         for (int k = 0; k < RT_LANES; k++)
             r[k] = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
         unsigned mask = isa == RT_ISA_COUNT
-                            ? rt_scene_hit4(s, rt_isa_best(), r, HUGE_VAL, h4)
-                            : rt_leaf_lanes_hit((rt_isa)isa, rt_scene_leaf_lanes(s), b, prims, r,
+                            ? rt_scene_hit4(s, r, HUGE_VAL, h4)
+                            : rt_leaf_lanes_hit(&tests, rt_scene_leaf_lanes(s), b, prims, r,
                                                 1e-3, HUGE_VAL, h4);
         for (int k = 0; k < RT_LANES; k++) {
             rt_hit h1;
@@ -264,7 +275,7 @@ static void test_bvh_hit4_matches_hit(void **state)
         else
             rt_scene_add(s, rt_scene_quad(s, c, v3(10, 0, 3), v3(0, 8, -2), m));
     }
-    assert_int_equal(rt_scene_build(s), 0);
+    build_with_engine(s);
     assert_true(rt_scene_bvh(s)->nodes[0].count == 0); /* not a leaf: the other path */
     hits = check_hit4(s, 20000, v3(-20, -20, -20), v3(120, 120, 120), 18u);
     printf("rt_scene_hit4 = rt_bvh_hit on 1.2 x 10^6 + 8 x 10^4 rays (%d hits in the soup)\n", hits);
@@ -287,7 +298,7 @@ static rt_scene *quad_kinds_scene(void)
     rt_scene_add(s, rt_scene_quad(s, v3(30, 30, 30), v3(10, 20, 30), v3(-20, 10, 5), m));
     rt_scene_add(s, rt_scene_sphere(s, v3(60, 60, 60), 15.0, m));
     rt_scene_add(s, rt_scene_flip(s, rt_scene_sphere(s, v3(50, 50, 50), 200.0, m)));
-    assert_int_equal(rt_scene_build(s), 0);
+    build_with_engine(s);
     return s;
 }
 
@@ -328,7 +339,7 @@ static void test_bvh_matches_brute_force(void **state)
             rt_scene_add(s, rt_scene_quad(s, c, u, v, m));
         }
     }
-    assert_int_equal(rt_scene_build(s), 0);
+    build_with_engine(s);
     const rt_bvh *b = rt_scene_bvh(s);
     assert_true(b->depth < RT_BVH_MAX_DEPTH);
     check_bvh(s, 200000, v3(-20, -20, -20), v3(120, 120, 120), 13u);
@@ -350,8 +361,9 @@ static bool same_hit(const rt_hit *a, const rt_hit *b)
            a->material == b->material && a->prim == b->prim;
 }
 
-/* rt_leaf_lanes_hit1 with instruction set isa (rt_scene_hit, the
- * renderer's entry, for RT_ISA_COUNT) against rt_bvh_hit on n_rays rays,
+/* rt_leaf_lanes_hit1 with the tests of instruction set isa (rt_scene_hit
+ * with the scene's own, the engine's: the renderer's entry, for
+ * RT_ISA_COUNT) against rt_bvh_hit on n_rays rays,
  * one in eight along axes or axis planes: the same hit or miss and the
  * same record bit for bit, the primitive included. A ray in sixteen has
  * tmin 0 or -50 and one in sixteen a finite tmax (not through
@@ -359,6 +371,7 @@ static bool same_hit(const rt_hit *a, const rt_hit *b)
 static int check_hit1_isa(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint64_t seed, int isa)
 {
     const char *name = isa == RT_ISA_COUNT ? "rt_scene_hit" : rt_isa_name((rt_isa)isa);
+    rt_leaf_tests tests = rt_fast_leaf_tests(isa == RT_ISA_COUNT ? RT_ISA_PORTABLE : (rt_isa)isa);
     const rt_bvh *b = rt_scene_bvh(s);
     const rt_prim *prims = rt_scene_prims(s);
     mc_rng rng = mc_rng_derive(seed, 0u);
@@ -373,7 +386,7 @@ static int check_hit1_isa(const rt_scene *s, int n_rays, vec3 lo, vec3 hi, uint6
         rt_hit h1, h = {0};
         bool hit = isa == RT_ISA_COUNT
                        ? rt_scene_hit(s, r, HUGE_VAL, &h1)
-                       : rt_leaf_lanes_hit1((rt_isa)isa, rt_scene_leaf_lanes(s), b, prims, &r, tmin,
+                       : rt_leaf_lanes_hit1(&tests, rt_scene_leaf_lanes(s), b, prims, &r, tmin,
                                             tmax, &h1);
         if (hit != rt_bvh_hit(b, prims, &r, tmin, tmax, &h))
             fail_msg("ray %d (%s): hit1 says %d, rt_bvh_hit %d", i, name, hit, !hit);
@@ -433,7 +446,7 @@ static void test_bvh_hit1_matches_hit(void **state)
     for (int i = 0, z = 51; i < 10; i++)
         rt_scene_add(s, items[i] >= 0 ? items[i]
                                       : rt_scene_quad(s, v3(0, 0, z++), v3(100, 0, 0), v3(0, 100, 0), m));
-    assert_int_equal(rt_scene_build(s), 0);
+    build_with_engine(s);
     assert_non_null(rt_scene_leaf_lanes(s));
     hits = check_hit1(s, 40000, v3(0, 0, -20), v3(100, 100, 120), 25u);
     /* Every hit on a copy is a tie, won by the first: ball and q, never
@@ -464,7 +477,7 @@ static void test_bvh_degenerate_inputs(void **state)
         rt_scene_add(s, rt_scene_sphere(s, v3(1, 2, 3), 1.0 + i, m));
     for (int i = 0; i < 300; i++) /* geometric sizes: a deep SAH tree */
         rt_scene_add(s, rt_scene_sphere(s, v3(pow(1.1, i), 0, 0), 1e-3, m));
-    assert_int_equal(rt_scene_build(s), 0);
+    build_with_engine(s);
     assert_true(rt_scene_bvh(s)->depth < RT_BVH_MAX_DEPTH);
     check_bvh(s, 20000, v3(-50, -50, -50), v3(50, 50, 50), 15u);
     rt_scene_destroy(s);

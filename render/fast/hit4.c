@@ -1,11 +1,11 @@
 /* render/fast/hit4.c - a root leaf against four rays at once, and one ray
- * against four of its quads at once; render/fast/hit4_layout.c builds the
- * lanes they read. */
+ * against four of its quads at once; render/leaf4.c builds the lanes they
+ * read. */
 #include "render/fast/hit4.h"
 
 #include <stddef.h>
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#if RT_ISA_X86
 /* Hand-written AVX2: with the rays traced one by one instead (the
  * portable path), make bench's book render took 20-45% longer
  * (docs/performance.md), far above the 5% that a second copy of the
@@ -308,43 +308,13 @@ __attribute__((target("avx2"))) static bool hit1_avx2(const rt_leaf_lanes *b4, c
 /* END SNIPPET hit1_avx2 */
 #endif
 
-/* BEGIN SNIPPET hit4_dispatch */
-unsigned rt_leaf_lanes_hit(rt_isa isa, const rt_leaf_lanes *ll, const rt_bvh *bvh,
-                           const rt_prim *prims, const rt_ray r[RT_LANES], double tmin,
-                           double tmax, rt_hit h[RT_LANES])
+rt_leaf_tests rt_fast_leaf_tests(rt_isa isa)
 {
-#if defined(__x86_64__) && defined(__GNUC__)
-    /* tmin >= 0: see "Exactness" above. */
-    if (ll && tmin >= 0.0 && isa == RT_ISA_AVX2)
-        return hit4_avx2(ll, prims, r, tmin, tmax, h);
+#if RT_ISA_X86
+    if (isa == RT_ISA_AVX2)
+        return (rt_leaf_tests){hit4_avx2, hit1_avx2};
 #else
     (void)isa;
-    (void)ll;
 #endif
-    unsigned mask = 0;
-    for (int k = 0; k < RT_LANES; k++)
-        mask |= (unsigned)rt_bvh_hit(bvh, prims, &r[k], tmin, tmax, &h[k]) << k;
-    return mask;
-}
-/* END SNIPPET hit4_dispatch */
-
-bool rt_leaf_lanes_hit1(rt_isa isa, const rt_leaf_lanes *ll, const rt_bvh *bvh,
-                        const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
-                        rt_hit *h)
-{
-#if defined(__x86_64__) && defined(__GNUC__)
-    if (ll && isa == RT_ISA_AVX2)
-        return hit1_avx2(ll, prims, r, tmin, tmax, h);
-#else
-    (void)isa;
-    (void)ll;
-#endif
-    return rt_bvh_hit(bvh, prims, r, tmin, tmax, h);
-}
-
-unsigned rt_scene_hit4(const rt_scene *s, rt_isa isa, const rt_ray r[RT_LANES], double tmax,
-                       rt_hit h[RT_LANES])
-{
-    return rt_leaf_lanes_hit(isa, rt_scene_leaf_lanes(s), rt_scene_bvh(s), rt_scene_prims(s), r,
-                             rt_scene_t_min(s), tmax, h);
+    return (rt_leaf_tests){NULL, NULL};
 }

@@ -1,6 +1,8 @@
 /* render/fast/isa.c - the one decision of the instruction set. */
 #include "render/fast/isa.h"
 
+#include <stdlib.h>
+#include <string.h>
 #include <threads.h>
 
 bool rt_isa_available(rt_isa isa)
@@ -9,7 +11,7 @@ bool rt_isa_available(rt_isa isa)
     case RT_ISA_PORTABLE:
         return true;
     case RT_ISA_AVX2:
-#if defined(__x86_64__) && defined(__GNUC__)
+#if RT_ISA_X86
         return __builtin_cpu_supports("avx2");
 #else
         return false;
@@ -25,7 +27,9 @@ static once_flag choose_once = ONCE_FLAG_INIT;
 
 static void choose(void)
 {
-    chosen = rt_isa_available(RT_ISA_AVX2) ? RT_ISA_AVX2 : RT_ISA_PORTABLE;
+    const char *want = getenv("MCBOX_ISA");
+    bool portable = want && strcmp(want, "portable") == 0;
+    chosen = !portable && rt_isa_available(RT_ISA_AVX2) ? RT_ISA_AVX2 : RT_ISA_PORTABLE;
 }
 
 rt_isa rt_isa_best(void)

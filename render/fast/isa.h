@@ -14,6 +14,17 @@
 
 #include <stdbool.h>
 
+#include "render/leaf4.h" /* RT_LANES */
+
+/* Whether this build has the x86 vector code at all: gcc or clang on
+ * x86-64. Every file of render/fast/ guards its intrinsics with this one
+ * switch. */
+#if defined(__x86_64__) && defined(__GNUC__)
+#define RT_ISA_X86 1
+#else
+#define RT_ISA_X86 0
+#endif
+
 typedef enum rt_isa {
     RT_ISA_PORTABLE, /* the reference code, one lane after the other */
     RT_ISA_AVX2      /* four lanes in one 256-bit vector */
@@ -21,15 +32,14 @@ typedef enum rt_isa {
 
 #define RT_ISA_COUNT 2
 
-/* Paths traced together, one per vector lane. */
-#define RT_LANES 4
-
 /* Whether this build and this processor can run isa. */
 bool rt_isa_available(rt_isa isa);
 
 /* The instruction set the fast path uses: the last available one of the
  * list above, decided on the first call and the same for the rest of the
- * process. */
+ * process; RT_ISA_PORTABLE when the environment variable MCBOX_ISA is
+ * "portable" (then no instruction-set code runs: the run mode that the
+ * tests compare bit for bit with the default). */
 rt_isa rt_isa_best(void);
 
 /* "portable" or "avx2". */

@@ -55,7 +55,7 @@ vec3 rt_lights4_generate(const rt_lights4 *at, int k, rt_sampler *sampler)
  * same bits for a multiplication instead of a division. */
 static bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#if RT_ISA_X86
 /* Hand-written AVX2: with render/lights.h lane by lane instead (the
  * portable path), make bench's book render took 35% longer
  * (docs/performance.md), far above the 5% that a vector copy of the
@@ -227,7 +227,7 @@ void rt_lights4_prepare(rt_isa isa, rt_lights4 *at, const rt_light *lights, int 
 {
     at->lights = lights;
     at->n = n;
-#if defined(__x86_64__) && defined(__GNUC__)
+#if RT_ISA_X86
     if (isa == RT_ISA_AVX2) {
         prepare_avx2(at, origin);
         return;
@@ -246,7 +246,7 @@ void rt_lights4_prepare(rt_isa isa, rt_lights4 *at, const rt_light *lights, int 
 void rt_lights4_value(rt_isa isa, const rt_lights4 *at, const vec3 d[RT_LANES],
                       double out[RT_LANES])
 {
-#if defined(__x86_64__) && defined(__GNUC__)
+#if RT_ISA_X86
     if (isa == RT_ISA_AVX2) {
         value_avx2(at, d, out);
         return;

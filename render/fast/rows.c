@@ -56,7 +56,9 @@ static void turn_diffuse(const rt_render_job *job, rt_isa isa, lane *lanes,
     rt_lights4_prepare(isa, &at4, rt_scene_lights(s), rt_scene_light_count(s), at_p);
     for (int i = 0; i < RT_LANES; i++)
         if ((diffuse >> i) & 1u)
-            dirs[i] = rt_path_draw(&job->path, &verts[i], &at4, i, &lanes[i].sampler);
+            dirs[i] = rt_path_draws_light(&job->path, &lanes[i].sampler)
+                          ? rt_lights4_generate(&at4, i, &lanes[i].sampler)
+                          : rt_path_draw_material(&verts[i], &lanes[i].sampler);
     double values[RT_LANES];
     rt_lights4_value(isa, &at4, dirs, values);
     for (int i = 0; i < RT_LANES; i++)
@@ -76,14 +78,11 @@ static void turn_diffuse(const rt_render_job *job, rt_isa isa, lane *lanes,
 rt_row_counts rt_fast_render_row(const rt_row *r)
 {
     const rt_render_job *job = r->job;
-    rt_image *img = r->img;
     mc_rng *streams = r->streams;
     const rt_jitter *jt = r->jt;
-    int y = r->y;
     uint64_t k0 = r->k0, k1 = r->k1;
-    rt_cell c0 = r->c0;
     rt_isa isa = rt_isa_best();
-    int w = img->width, next = 0;
+    int y = r->y, w = r->img->width, next = 0;
     unsigned live = 0; /* the lanes with a pixel: each has a path under way */
     uint64_t seg = 0, drop = 0;
     lane lanes[RT_LANES];
@@ -91,7 +90,7 @@ rt_row_counts rt_fast_render_row(const rt_row *r)
     vec3 dirs[RT_LANES];
     for (int i = 0; i < RT_LANES; i++) {
         dirs[i] = vec3_make(0.0, 0.0, 1.0);
-        lane_take(&lanes[i], job, jt, streams, y, next, w, k0, c0);
+        lane_take(&lanes[i], job, jt, streams, y, next, w, k0, r->c0);
         next += next < w;
         live |= (unsigned)(lanes[i].x >= 0) << i;
     }
@@ -113,14 +112,14 @@ rt_row_counts rt_fast_render_row(const rt_row *r)
              * finished as soon as it begins. */
             while (l->path.done) {
                 size_t idx = (size_t)y * (size_t)w + (size_t)l->x;
-                drop += !rt_pixel_add(&img->px[idx], l->path.L);
+                drop += !rt_pixel_add(&r->img->px[idx], l->path.L);
                 if (++l->k < k1) {
                     l->path = rt_path_begin(&job->path, rt_sample_ray(&job->camera, jt, l->x, y,
                                                                       l->k, &l->c, &l->sampler));
                     continue;
                 }
                 streams[idx] = l->sampler.rng;
-                lane_take(l, job, jt, streams, y, next, w, k0, c0);
+                lane_take(l, job, jt, streams, y, next, w, k0, r->c0);
                 next += next < w;
                 if (l->x < 0) {
                     live &= ~(1u << i);
@@ -134,7 +133,7 @@ rt_row_counts rt_fast_render_row(const rt_row *r)
         rt_hit hits[RT_LANES];
         for (int i = 0; i < RT_LANES; i++)
             rays[i] = lanes[i].path.ray;
-        unsigned hit = rt_scene_hit4(job->scene, isa, rays, HUGE_VAL, hits);
+        unsigned hit = rt_scene_hit4(job->scene, rays, HUGE_VAL, hits);
         unsigned diffuse = 0;
         settle = 0;
         for (int i = 0; i < RT_LANES; i++) {

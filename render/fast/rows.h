@@ -1,6 +1,6 @@
 /* render/fast/rows.h - the book's integrator four paths at a time.
  *
- * The reference row kernel (render/render.c) traces one path after the
+ * The reference row kernel (render/row.c) traces one path after the
  * other, and each path's segments are a chain in which every step waits
  * for the last. This loop gives each of RT_LANES lanes a pixel of the row
  * and advances the four paths together: their segments in one four-ray

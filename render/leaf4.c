@@ -1,8 +1,8 @@
-/* render/fast/hit4_layout.c - the lanes of a root leaf (hit4.h): its
- * quads sorted by the kind of their normal and edges, each field repeated
- * in four lanes, and the packets of four quads for a ray traced alone.
- * render/fast/hit4.c tests rays against them. */
-#include "render/fast/hit4.h"
+/* render/leaf4.c - the lanes of a root leaf: its quads sorted by the
+ * kind of their normal and edges, each field repeated in four lanes, and
+ * the packets of four quads for a ray traced alone; and the choice between
+ * the four-wide tests (render/fast/hit4.c) and the BVH. */
+#include "render/leaf4.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -162,4 +162,28 @@ void rt_leaf_lanes_destroy(rt_leaf_lanes *b4)
     free(b4->rows);
     free(b4->packets);
     free(b4);
+}
+
+/* BEGIN SNIPPET hit4_dispatch */
+unsigned rt_leaf_lanes_hit(const rt_leaf_tests *t, const rt_leaf_lanes *ll, const rt_bvh *bvh,
+                           const rt_prim *prims, const rt_ray r[RT_LANES], double tmin,
+                           double tmax, rt_hit h[RT_LANES])
+{
+    /* tmin >= 0: the exactness argument of render/fast/hit4.c needs it. */
+    if (t && t->hit4 && ll && tmin >= 0.0)
+        return t->hit4(ll, prims, r, tmin, tmax, h);
+    unsigned mask = 0;
+    for (int k = 0; k < RT_LANES; k++)
+        mask |= (unsigned)rt_bvh_hit(bvh, prims, &r[k], tmin, tmax, &h[k]) << k;
+    return mask;
+}
+/* END SNIPPET hit4_dispatch */
+
+bool rt_leaf_lanes_hit1(const rt_leaf_tests *t, const rt_leaf_lanes *ll, const rt_bvh *bvh,
+                        const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
+                        rt_hit *h)
+{
+    if (t && t->hit1 && ll)
+        return t->hit1(ll, prims, r, tmin, tmax, h);
+    return rt_bvh_hit(bvh, prims, r, tmin, tmax, h);
 }
