@@ -116,3 +116,4 @@ include mk/pgo.mk
 include mk/install.mk
 include mk/fuzz.mk
 include mk/exercises.mk
+include mk/lab.mk

@@ -439,6 +439,15 @@ local function link(el)
   return el
 end
 
+-- HTML only ---------------------------------------------------------------
+-- A block of class html-only (a link to the warp lab, a live widget) is
+-- left out of the EPUB, whose readers run no scripts and have no lab page.
+
+local function html_only(el)
+  if no_links and el.classes:includes("html-only") then return {} end
+  return nil
+end
+
 -- The check of the whole tree -------------------------------------------
 -- With metadata book-check-regions: every marked region in the files the
 -- tree names must have been used (state/used-regions); every file is parsed,
@@ -490,7 +499,8 @@ return {
       return nil
     end,
     Image = image,
-    Link = link },
+    Link = link,
+    Div = html_only },
   { Para = para },
   { Pandoc = Pandoc },
 }
