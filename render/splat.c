@@ -51,14 +51,19 @@ bool rt_splat_add(rt_splat_sum *s, double v)
 {
     if (!(fabs(v) < 0x1p62))
         return false;
-    /* v = i + f with i = floor(v) an integer and 0 <= f < 1. The
-     * difference v - i is exact except for a tiny negative v, where it
-     * rounds up to 1: f is then the largest fraction below 1. f 2^64 is
+    /* v = i + f with i = floor(v) an integer and 0 <= f < 1: the
+     * conversion truncates toward zero (one instruction, where floor is a
+     * library call on the x86-64 baseline), then one less for a negative v
+     * with a fraction. Both i and v - i are exact (|v| < 2^62, and a v of
+     * 2^52 or more has no fraction), except that v - i rounds up to 1 for
+     * a tiny negative v: f is then the largest fraction below 1. f 2^64 is
      * exact (a power of two), and the conversion truncates: v rounded down
      * to a multiple of 2^-64. */
-    double i = floor(v), f = (v - i) * 0x1p64;
+    int64_t i = (int64_t)v;
+    i -= (double)i > v;
+    double f = (v - (double)i) * 0x1p64;
     uint64_t lo = f < 0x1p64 ? (uint64_t)f : UINT64_MAX;
-    add128(s, (uint64_t)(int64_t)i, lo);
+    add128(s, (uint64_t)i, lo);
     return true;
 }
 /* END SNIPPET splat_add */
