@@ -111,6 +111,31 @@ MATH_JS = """(() => {
 })()"""
 
 
+def event_problems(b, session):
+    """What the browser reported for one session's page: exceptions, console
+    errors, requests for anything but file: and data: URLs, failed loads."""
+    out = []
+    for e in b.events:
+        if e.get("sessionId") != session:
+            continue
+        m, p = e.get("method"), e.get("params", {})
+        if m == "Runtime.exceptionThrown":
+            out.append("exception: " + p["exceptionDetails"].get("text", ""))
+        elif m == "Runtime.consoleAPICalled" and p.get("type") in ("error", "assert"):
+            out.append("console error: " + " ".join(
+                str(a.get("value", a.get("description", ""))) for a in p.get("args", [])))
+        elif m == "Log.entryAdded" and p["entry"].get("level") == "error":
+            out.append("console error: " + p["entry"].get("text", "") +
+                       " " + p["entry"].get("url", ""))
+        elif m == "Network.requestWillBeSent":
+            url = p["request"]["url"]
+            if not (url.startswith("file:") or url.startswith("data:")):
+                out.append("requests " + url)
+        elif m == "Network.loadingFailed":
+            out.append("failed to load: " + p.get("errorText", ""))
+    return out
+
+
 def check_page(b, session, path, shot, phone):
     """Loads one page; returns (problems, math count)."""
     problems = []
@@ -126,24 +151,7 @@ def check_page(b, session, path, shot, phone):
     if info["flat"]:
         problems.append("%d of %d <math> elements have no rendered size (first: %s)"
                         % (info["flat"], info["math"], info["first"]))
-    for e in b.events:
-        if e.get("sessionId") != session:
-            continue
-        m, p = e.get("method"), e.get("params", {})
-        if m == "Runtime.exceptionThrown":
-            problems.append("exception: " + p["exceptionDetails"].get("text", ""))
-        elif m == "Runtime.consoleAPICalled" and p.get("type") in ("error", "assert"):
-            problems.append("console error: " + " ".join(
-                str(a.get("value", a.get("description", ""))) for a in p.get("args", [])))
-        elif m == "Log.entryAdded" and p["entry"].get("level") == "error":
-            problems.append("console error: " + p["entry"].get("text", "") +
-                            " " + p["entry"].get("url", ""))
-        elif m == "Network.requestWillBeSent":
-            url = p["request"]["url"]
-            if not (url.startswith("file:") or url.startswith("data:")):
-                problems.append("requests " + url)
-        elif m == "Network.loadingFailed":
-            problems.append("failed to load: " + p.get("errorText", ""))
+    problems += event_problems(b, session)
     if shot:
         data = b.call("Page.captureScreenshot", {"format": "png"}, session)["data"]
         with open(shot, "wb") as f:

@@ -28,7 +28,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_browser import BROWSERS, Browser  # noqa: E402
+from check_browser import BROWSERS, Browser, event_problems  # noqa: E402
 
 # Rows that must pass and the negative control that must fail, with the
 # count and seed of `warp chi2 NAME --n N --seed S` (exit 0 pass, 1 fail).
@@ -69,25 +69,7 @@ class Page:
         self.b.wait_event("Page.loadEventFired", self.session)
 
     def problems(self):
-        out = []
-        for e in self.b.events:
-            if e.get("sessionId") != self.session:
-                continue
-            m, p = e.get("method"), e.get("params", {})
-            if m == "Runtime.exceptionThrown":
-                out.append("exception: " + p["exceptionDetails"].get("text", ""))
-            elif m == "Runtime.consoleAPICalled" and p.get("type") in ("error", "assert"):
-                out.append("console error: " + " ".join(
-                    str(a.get("value", a.get("description", ""))) for a in p.get("args", [])))
-            elif m == "Log.entryAdded" and p["entry"].get("level") == "error":
-                out.append("console error: " + p["entry"].get("text", ""))
-            elif m == "Network.requestWillBeSent":
-                url = p["request"]["url"]
-                if not (url.startswith("file:") or url.startswith("data:")):
-                    out.append("requests " + url)
-            elif m == "Network.loadingFailed":
-                out.append("failed to load: " + p.get("errorText", ""))
-        return out
+        return event_problems(self.b, self.session)
 
     def screenshot(self, path):
         size = self.b.call("Page.getLayoutMetrics", {}, self.session)["cssContentSize"]
