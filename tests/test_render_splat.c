@@ -98,7 +98,7 @@ static void test_refused_terms_add_nothing(void **state)
     rt_splat_sum s = {0, 0};
     assert_true(rt_splat_add(&s, 1.5));
     rt_splat_sum before = s;
-    const double bad[] = {NAN, INFINITY, -INFINITY, 0x1p62, -0x1p62, 1e300};
+    const double bad[] = {(double)NAN, (double)INFINITY, -(double)INFINITY, 0x1p62, -0x1p62, 1e300};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         assert_false(rt_splat_add(&s, bad[i]));
         assert_memory_equal(&s, &before, sizeof s);
@@ -106,7 +106,7 @@ static void test_refused_terms_add_nothing(void **state)
     /* A pixel's three channels go in together or not at all. */
     rt_splats *sp = rt_splats_create(2, 1);
     assert_non_null(sp);
-    assert_false(rt_splats_add_rgb(sp, 1, 1.0, NAN, 2.0));
+    assert_false(rt_splats_add_rgb(sp, 1, 1.0, (double)NAN, 2.0));
     for (int i = 0; i < 6; i++)
         assert_true(sp->sum[i].hi == 0 && sp->sum[i].lo == 0);
     assert_true(rt_splats_add_rgb(sp, 1, 1.0, 0.5, 2.0));
