@@ -7,6 +7,7 @@
 #include "mc/constants.h"
 #include "mc/onb.h"
 #include "render/names.h"
+#include "render/roulette.h"
 #include "samplers/hemisphere.h"
 
 _Static_assert(RT_MAX_LIGHTS <= RT_LIGHTS_AT_MAX, "rt_lights_at holds every light of a scene");
@@ -43,24 +44,6 @@ const char *rt_strategy_name(rt_strategy s)
 }
 
 static bool is_zero(vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
-
-/* BEGIN SNIPPET roulette_rule */
-/* Russian roulette after `depth + 1` segments: continue with probability
- * q = min(0.95, max channel of beta) and divide beta by q, so that the
- * expected contribution of everything after this point is unchanged
- * (q (X / q) + (1 - q) 0 = X). Returns false when the path stops. */
-static bool roulette(const rt_path_settings *ps, int depth, vec3 *beta, rt_sampler *sampler)
-{
-    if (!ps->russian_roulette || depth + 1 < ps->rr_start)
-        return true;
-    double q = fmax(beta->x, fmax(beta->y, beta->z));
-    q = q < 0.95 ? q : 0.95;
-    if (!(q > 0.0) || rt_sampler_1d(sampler) >= q)
-        return false;
-    *beta = vec3_scale(*beta, 1.0 / q);
-    return true;
-}
-/* END SNIPPET roulette_rule */
 
 /* --- the densities --------------------------------------------------------
  * The light list seen from one hit point: the book's pdf objects (a
@@ -198,11 +181,14 @@ rt_path_state rt_path_begin(const rt_path_settings *ps, rt_ray r)
     return p;
 }
 
-/* The end of every step that goes on: roulette, then the depth limit. */
-static void path_next(const rt_path_settings *ps, rt_path_state *p, rt_sampler *sampler)
+/* The end of every step that goes on: roulette at the vertex, whose
+ * throughput times albedo is beta_albedo, then the depth limit. */
+static void path_next(const rt_path_settings *ps, rt_path_state *p, vec3 beta_albedo,
+                      rt_sampler *sampler)
 {
     /* The flag is tested here too so that, off, the call is skipped. */
-    if (ps->russian_roulette && !roulette(ps, p->depth, &p->beta, sampler))
+    if (ps->russian_roulette &&
+        !rt_roulette(ps->rr_start, p->depth, beta_albedo, &p->beta, sampler))
         p->done = true;
     else if (++p->depth >= ps->max_depth)
         p->done = true;
@@ -229,7 +215,7 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
         /* Field by field, not as one struct (docs/performance.md). */
         p->ray.origin = v->sr.ray.origin;
         p->ray.dir = v->sr.ray.dir;
-        path_next(ps, p, sampler);
+        path_next(ps, p, p->beta, sampler);
         return false;
     }
     v->p = h->p;
@@ -241,8 +227,8 @@ bool rt_path_scatter(const rt_scene *s, const rt_path_settings *ps, rt_path_stat
 
 /* The rest of a diffuse step, along dir drawn with density pd. */
 /* BEGIN SNIPPET path_turn */
-static void path_turn(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
-                      vec3 dir, double pd, rt_sampler *sampler)
+RT_HOT_INLINE void path_turn(const rt_path_settings *ps, rt_path_state *p, const rt_path_vertex *v,
+                             vec3 dir, double pd, rt_sampler *sampler)
 {
     rt_hit h = {.p = v->p, .normal = v->normal};
     double sp = rt_material_scattering_pdf(v->m, &h, dir);
@@ -251,9 +237,11 @@ static void path_turn(const rt_path_settings *ps, rt_path_state *p, const rt_pat
         p->done = true;
         return;
     }
-    p->beta = vec3_scale(vec3_mul(p->beta, v->sr.attenuation), sp / pd);
+    /* Roulette's q comes from beta_albedo, before the direction's s/p. */
+    vec3 beta_albedo = vec3_mul(p->beta, v->sr.attenuation);
+    p->beta = vec3_scale(beta_albedo, sp / pd);
     p->ray = rt_ray_make(v->p, dir);
-    path_next(ps, p, sampler);
+    path_next(ps, p, ps->neg.roulette_after_direction ? p->beta : beta_albedo, sampler);
 }
 /* END SNIPPET path_turn */
 
@@ -404,8 +392,11 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
         rt_sampler_segment(sampler, depth);
         if (!hit || !rt_material_scatter(m, &r, &h, sampler, &sr))
             break;
+        /* Roulette's q comes from beta_albedo, before the direction's s/p. */
+        vec3 beta_albedo;
         if (sr.specular) {
-            beta = vec3_mul(beta, sr.attenuation);
+            beta_albedo = vec3_mul(beta, sr.attenuation);
+            beta = beta_albedo;
             r = sr.ray;
             after_diffuse = false;
         } else {
@@ -418,13 +409,16 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
             double sp = rt_material_scattering_pdf(m, &h, dir);
             if (!(sp > 0.0))
                 break;
-            beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp / pm);
+            beta_albedo = vec3_mul(beta, sr.attenuation);
+            beta = vec3_scale(beta_albedo, sp / pm);
             prev_p = h.p;
             prev_pm = pm;
             after_diffuse = true;
             r = rt_ray_make(h.p, dir);
         }
-        if (ps->russian_roulette && !roulette(ps, depth, &beta, sampler))
+        if (ps->neg.roulette_after_direction)
+            beta_albedo = beta;
+        if (ps->russian_roulette && !rt_roulette(ps->rr_start, depth, beta_albedo, &beta, sampler))
             break;
     }
     /* END SNIPPET nee_loop */

@@ -80,6 +80,11 @@ typedef struct rt_negative_controls {
     /* render/sampler.h: with sobol, a 1D request does not move on to the
      * next dimension (read by rt_render_sampler, render/render.h). */
     bool sampler_reuse_dim;
+    /* render/roulette.h: the survival probability taken from the
+     * throughput after the direction's s/p instead of before it (unbiased
+     * still, but the mixture's lamp-aimed directions get a small q just
+     * before the lamp: several times the variance). */
+    bool roulette_after_direction;
 } rt_negative_controls;
 
 /* Initialise with designated initialisers (or start from
