@@ -168,7 +168,9 @@ EXPORT(lab_catalog) const char *lab_catalog(void)
 EXPORT(lab_select) int lab_select(void)
 {
     input[LAB_INPUT_SIZE - 1] = '\0';
-    char *save = NULL, *name = strtok_r(input, "\n", &save);
+    /* strtok's hidden state is harmless here: the module has one thread
+     * and this is the only caller. */
+    char *name = strtok(input, "\n");
     const cat_row *r = name ? cat_find(name) : NULL;
     if (!r) {
         snprintf(message, sizeof message, "no sampler '%s' in the catalog", name ? name : "");
@@ -176,7 +178,7 @@ EXPORT(lab_select) int lab_select(void)
     }
     cat_values p;
     cat_defaults(r, &p);
-    for (char *a = strtok_r(NULL, "\n", &save); a; a = strtok_r(NULL, "\n", &save))
+    for (char *a = strtok(NULL, "\n"); a; a = strtok(NULL, "\n"))
         if (!cat_set_param(r, &p, a, message, sizeof message))
             return 0;
     /* Prepared aside first, so that a bad parameter leaves the selection
@@ -244,7 +246,7 @@ static void source_close(source *src)
  * cat_sample does. */
 static void source_next(source *src, double u[4], double x[3])
 {
-    u[0] = u[1] = u[2] = u[3] = NAN;
+    u[0] = u[1] = u[2] = u[3] = (double)NAN;
     if (src->kind == LAB_INDEPENDENT && !src->uniforms) {
         cat_sample(&state, &src->rng, x);
         src->k++;
