@@ -192,6 +192,33 @@ static void sampler_key(const mcbox_check_result *r, char *buf, size_t size)
         snprintf(buf, size, "chi2 %.5g/%d dof, p = %.3g", r->statistic, r->dof, r->pvalue);
 }
 
+static void direction_sample(const double *u, mcbox_sample *out, void *ctx)
+{
+    const ex_direction_fns *f = ctx;
+    ex_put3(out->x, f->sample(u[0], u[1]));
+}
+
+static double direction_pdf(const double *x, void *ctx)
+{
+    const ex_direction_fns *f = ctx;
+    return f->pdf(ex_vec3(x));
+}
+
+static void direction_invert(const double *x, double *u, void *ctx)
+{
+    const ex_direction_fns *f = ctx;
+    f->invert(ex_vec3(x), u);
+}
+
+mcbox_sampler ex_direction_sampler(mcbox_domain_kind kind, const ex_direction_fns *fns)
+{
+    mcbox_sampler s = mcbox_sampler_init(kind);
+    s.sample = direction_sample, s.pdf = direction_pdf, s.ctx = (void *)fns;
+    if (fns->invert)
+        s.invert = direction_invert;
+    return s;
+}
+
 void ex_check_sampler(ex_judge *j, const char *what, const mcbox_sampler *s, uint64_t seed,
                       uint64_t samples)
 {

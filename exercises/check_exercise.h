@@ -119,6 +119,19 @@ void ex_check_exact(ex_judge *j, const char *what, bool ok, const char *figure, 
 #define EX_MAYBE_UNUSED
 #endif
 
+/* A direction exercise's functions: sample from two uniforms, the density
+ * per unit solid angle, and the inverse (NULL when the exercise has
+ * none). */
+typedef struct ex_direction_fns {
+    vec3 (*sample)(double u1, double u2);
+    double (*pdf)(vec3 w);
+    void (*invert)(vec3 w, double u[2]);
+} ex_direction_fns;
+
+/* A sampler of domain `kind` (a direction domain) over fns, which must
+ * outlive it: the public check's callbacks for the three functions. */
+mcbox_sampler ex_direction_sampler(mcbox_domain_kind kind, const ex_direction_fns *fns);
+
 /* Conversions between the check API's coordinates and vec3. */
 static inline vec3 ex_vec3(const double *x) { return vec3_make(x[0], x[1], x[2]); }
 static inline void ex_put3(double *x, vec3 v) { x[0] = v.x, x[1] = v.y, x[2] = v.z; }

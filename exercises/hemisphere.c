@@ -56,28 +56,10 @@ static void invert(vec3 w, double u[2])
 
 /* --- the judge: nothing to change below ----------------------------------- */
 
-static void check_sample(const double *u, mcbox_sample *out, void *ctx)
-{
-    (void)ctx;
-    ex_put3(out->x, sample(u[0], u[1]));
-}
-
-static double check_pdf(const double *x, void *ctx)
-{
-    (void)ctx;
-    return pdf(ex_vec3(x));
-}
-
-static void check_invert(const double *x, double *u, void *ctx)
-{
-    (void)ctx;
-    invert(ex_vec3(x), u);
-}
-
 static void judge(ex_judge *j)
 {
-    mcbox_sampler s = mcbox_sampler_init(MCBOX_HEMISPHERE);
-    s.sample = check_sample, s.pdf = check_pdf, s.invert = check_invert;
+    static const ex_direction_fns fns = {sample, pdf, invert};
+    mcbox_sampler s = ex_direction_sampler(MCBOX_HEMISPHERE, &fns);
     ex_check_sampler(j, "public check", &s, 3201, 1000000);
 }
 

@@ -45,22 +45,10 @@ static double pdf(vec3 w)
 
 /* --- the judge: nothing to change below ----------------------------------- */
 
-static void check_sample(const double *u, mcbox_sample *out, void *ctx)
-{
-    (void)ctx;
-    ex_put3(out->x, sample(u[0], u[1]));
-}
-
-static double check_pdf(const double *x, void *ctx)
-{
-    (void)ctx;
-    return pdf(ex_vec3(x));
-}
-
 static void judge(ex_judge *j)
 {
-    mcbox_sampler s = mcbox_sampler_init(MCBOX_SPHERE);
-    s.sample = check_sample, s.pdf = check_pdf;
+    static const ex_direction_fns fns = {sample, pdf, NULL};
+    mcbox_sampler s = ex_direction_sampler(MCBOX_SPHERE, &fns);
     ex_check_sampler(j, "public check", &s, 3101, 1000000);
 }
 
