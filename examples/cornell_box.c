@@ -131,11 +131,8 @@ static void check_memory(const options *o)
 {
     double pixels = (double)o->width * (double)o->width;
     double need = pixels * (double)(sizeof(rt_pixel) + sizeof(mc_rng) + 3) + 64e6;
-    if (strategy_splats(o)) { /* a set of exact sums per thread (render/splat.h) */
-        int sums = app_threads_used(o->threads);
-        sums = sums < RT_SPLAT_BUFFERS ? sums : RT_SPLAT_BUFFERS;
-        need += pixels * 3.0 * sizeof(rt_splat_sum) * sums;
-    }
+    if (strategy_splats(o)) /* a set of exact sums per thread (render/splat.h) */
+        need += pixels * 3.0 * sizeof(rt_splat_sum) * rt_splat_sets(app_threads_used(o->threads));
     double have = (double)sysconf(_SC_PHYS_PAGES) * (double)sysconf(_SC_PAGE_SIZE);
     struct rlimit rl;
     if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (double)rl.rlim_cur < have)

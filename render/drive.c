@@ -122,7 +122,7 @@ static bool job_ok(const rt_render_job *job, const rt_image *img, int first, int
  * false when out of memory. */
 static bool splats_make(drive *d, rt_splats *theirs)
 {
-    int nt = d->threads < RT_SPLAT_BUFFERS ? d->threads : RT_SPLAT_BUFFERS;
+    int nt = rt_splat_sets(d->threads);
     size_t npix = (size_t)d->img->width * (size_t)d->img->height;
     d->threads = nt;
     d->splats = calloc((size_t)nt, sizeof *d->splats);

@@ -33,6 +33,13 @@
  * each): also the most threads that render these strategies at once. */
 #define RT_SPLAT_BUFFERS 8
 
+/* The sets of splat sums (and threads) of a render that would use
+ * `threads` threads (>= 1). */
+static inline int rt_splat_sets(int threads)
+{
+    return threads < RT_SPLAT_BUFFERS ? threads : RT_SPLAT_BUFFERS;
+}
+
 /* The splat kernel (render/row.h), for a job whose strategy splats
  * (rt_strategy_splats): each pixel sample's camera subpath goes to its
  * pixel, its light subpath's splats to r->splats. */
