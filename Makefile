@@ -92,7 +92,8 @@ _run: all
 	@MC_BUILD=$(B) bash tools/run_table.sh
 
 _bench: all reference
-	@MC_BUILD=$(B) MC_MPI=$(MPI) MC_REF_BOOK=$(REF)/book-$(REF_TAG) bash tools/run_bench.sh
+	@MC_BUILD=$(B) MC_MPI=$(MPI) MC_REF_BOOK="$(call ref_prefixes,book)" \
+	    MC_REF_LAMBERT="$(call ref_prefixes,lambert)" bash tools/run_bench.sh
 
 SEEDS ?= 20
 _soak: all $(TESTS)

@@ -145,15 +145,18 @@ static double q_fill(void *ctx, uint64_t n, mc_rng *rng)
     return acc;
 }
 
-/* Two pairs of 64 samples per pixel, as a renderer draws them. */
+/* Two pairs of 64 samples per pixel, as a renderer draws them: the
+ * pixel's key once per pixel (render/sampler.c), then the requests. */
 static double q_padded(void *ctx, uint64_t n, mc_rng *rng)
 {
     (void)ctx;
-    uint64_t seed = mc_rng_u32(rng), points = n / QMC_DIM;
+    uint64_t seed = mc_rng_u32(rng), points = n / QMC_DIM, key = 0;
     double acc = 0.0, u[2];
     for (uint64_t i = 0; i < points; i++) {
+        if (i % 64u == 0)
+            key = mc_sobol_padded_key(mc_qmc_stream_seed(seed, i / 64u));
         for (uint32_t pair = 0; pair < QMC_DIM / 2; pair++) {
-            mc_sobol_padded2(mc_qmc_stream_seed(seed, i / 64u), 2u * pair, (uint32_t)(i % 64u), 64u, u);
+            mc_sobol_padded2_keyed(key, 2u * pair, (uint32_t)(i % 64u), 64u, u);
             acc += u[0] + u[1];
         }
     }

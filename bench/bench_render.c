@@ -8,16 +8,23 @@
  * this render on one thread of the reference machine, 0.53 M paths/s), the
  * dropped non-finite samples and the mean linear RGB of the image.
  *
- * Then, when a converged reference is given (--reference PREFIX, or the
- * environment variable MC_REF_BOOK, which `make bench` sets to the images
- * `make reference` caches), the error table: for each strategy, the
- * seconds of a render with --max-threads threads (the better of two
- * renders of the same image), its pixel mean squared
- * error against the reference, and how many times the book's program it
- * is at equal error, (BOOK_SECONDS x BOOK_MSE) / (seconds x MSE): at equal
- * error the time scales as 1 / MSE, so this is the ratio of the times the
- * two would need to reach the same error. Last, the share of the squared
- * error that sits in the worst 1% of the pixels.
+ * Then, for each converged reference given, an error table at the
+ * reference's size. Book references come from --reference PREFIX or the
+ * environment variable MC_REF_BOOK, lambert ones from --lambert-reference
+ * PREFIX or MC_REF_LAMBERT; each variable may hold several prefixes
+ * separated by spaces (`make bench` sets them to the images `make
+ * reference` caches, 600 x 600 first, then the quicker 300 x 300). For each
+ * strategy the table gives the seconds of a render with --max-threads
+ * threads (the median of three, taken in rounds over all the strategies,
+ * so that a slow minute of the machine does not fall on one strategy), its
+ * pixel mean squared error against the reference, and for the book scene
+ * how many times the book's program it is at equal error,
+ * (BOOK_SECONDS x BOOK_MSE) / (seconds x MSE): at equal error the time
+ * scales as 1 / MSE, so this is the ratio of the times the two would need
+ * to reach the same error. The book's program does not render lambert, so
+ * there the table gives the efficiency 1 / (MSE x seconds) and its ratio
+ * to the mixture's. Last, the share of the squared error that sits in the
+ * worst 1% of the pixels.
  *
  * The reference is two independent renders, PREFIX-a.pfm and PREFIX-b.pfm
  * (different seeds). Their mean is the reference; its own noise, per
@@ -51,9 +58,10 @@
 #define BOOK_MSE 1.01e-3
 
 /* The rows of the error table, in order: a strategy (any name of
- * rt_bdpt_strategy_parse), "+rr" for Russian roulette, and the share of
- * the --spp samples per pixel it takes (the slow ones fewer, to keep the
- * bench short; the measure does not depend on the sample count). */
+ * rt_bdpt_strategy_parse), "+rr" for Russian roulette, "+sobol" for the
+ * padded Sobol sampler instead of the default, and the share of the --spp
+ * samples per pixel it takes (the slow ones fewer, to keep the bench
+ * short; the measure does not depend on the sample count). */
 typedef struct error_row {
     const char *name;
     double spp_share;
@@ -61,7 +69,7 @@ typedef struct error_row {
 static const error_row error_rows[] = {
     {"uniform", 1.0},  {"cosine", 1.0},     {"light", 1.0},   {"mixture", 1.0},
     {"mixture+rr", 1.0}, {"mis", 1.0},       {"lighttrace", 0.5}, {"bdpt", 0.25},
-    {"bdpt+rr", 0.5},
+    {"bdpt+rr", 0.5}, {"mis+rr+sobol", 1.0}, {"bdpt+rr+sobol", 0.5},
 };
 
 static const char *const prog = "bench_render";
@@ -137,60 +145,152 @@ static double worst_share(const rt_image *img, const rt_image *ref)
 }
 /* END SNIPPET worst_share */
 
-/* The error table (see the top of the file), at the reference's size.
- * The book's time is for 600 x 600 pixels; for another size it is scaled
- * by the pixel count (its cost is per path), while the pixel MSE at a
- * given spp hardly depends on the pixel size (a pixel's mean is over
- * spp samples either way). */
-static void error_table(const rt_scene *scene, rt_camera_params cp, uint64_t spp, uint64_t seed,
-                        int threads, const char *prefix)
+/* The renders of one error table, in rounds: every strategy once per
+ * round, NROUNDS rounds, each time's median kept. */
+#define NROUNDS 3
+#define NROWS (sizeof error_rows / sizeof error_rows[0])
+
+static int cmp_asc(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return (a > b) - (a < b);
+}
+
+/* Renders every row of error_rows NROUNDS times into img and fills, per
+ * row, the median seconds, the MSE against ref less its noise, the worst
+ * 1% share and the samples per pixel (0 for a row the renderer does not
+ * know). The image of a row is the same bits every round (a fixed seed,
+ * any thread count), which is checked: the MSE of a later round must equal
+ * the first's. False when a render fails or an MSE differs. */
+static bool error_rows_measure(const rt_scene *scene, rt_camera_params cp, uint64_t spp,
+                               uint64_t seed, int threads, const rt_image *ref, double noise,
+                               rt_image *img, double seconds[NROWS], double mse[NROWS],
+                               double worst[NROWS], uint64_t used_spp[NROWS])
+{
+    double times[NROWS][NROUNDS];
+    for (int round = 0; round < NROUNDS; round++) {
+        for (size_t i = 0; i < NROWS; i++) {
+            rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, img->width, img->width));
+            char name[32];
+            snprintf(name, sizeof name, "%s", error_rows[i].name);
+            job.path.russian_roulette = strstr(name, "+rr") != NULL;
+            job.sampler = strstr(name, "+sobol") ? RT_SAMPLER_SOBOL : RT_SAMPLER_STRATIFIED;
+            name[strcspn(name, "+")] = '\0';
+            used_spp[i] = 0;
+            if (!rt_bdpt_strategy_parse(name, &job.path))
+                continue;
+            uint64_t n = (uint64_t)((double)spp * error_rows[i].spp_share);
+            job.spp = n > 0 ? n : 1;
+            job.seed = seed;
+            job.threads = threads;
+            rt_render_stats st;
+            if (rt_render(&job, img, &st) != 0) {
+                fprintf(stderr, "%s: render failed\n", prog);
+                return false;
+            }
+            used_spp[i] = job.spp;
+            times[i][round] = st.seconds;
+            double e = rt_image_mse(img, ref) - noise;
+            if (round == 0) {
+                mse[i] = e;
+                worst[i] = worst_share(img, ref);
+            } else if (e != mse[i]) {
+                fprintf(stderr, "%s: %s: the same render gave another image (MSE %.17g, then %.17g)\n",
+                        prog, error_rows[i].name, mse[i], e);
+                return false;
+            }
+        }
+    }
+    for (size_t i = 0; i < NROWS; i++) {
+        qsort(times[i], NROUNDS, sizeof times[i][0], cmp_asc);
+        seconds[i] = times[i][NROUNDS / 2];
+    }
+    return true;
+}
+
+/* The error table of scene "book" or "lambert" (see the top of the file)
+ * at the size of the reference PREFIX-{a,b}.pfm. The book's time is for
+ * 600 x 600 pixels; for another size it is scaled by the pixel count (its
+ * cost is per path), while the pixel MSE at a given spp hardly depends on
+ * the pixel size (a pixel's mean is over spp samples either way). False
+ * when the reference cannot be read or a render fails. */
+static bool error_table(const char *scene_name, uint64_t spp, uint64_t seed, int threads,
+                        const char *prefix)
 {
     double noise = 0.0;
-    rt_image *ref = load_reference(prefix, &noise);
+    rt_camera_params cp;
+    rt_scene *scene = rt_scene_named(scene_name, &cp);
+    rt_image *ref = scene ? load_reference(prefix, &noise) : NULL;
     int width = ref ? ref->width : 1;
     rt_image *img = rt_image_create(width, width);
-    if (!ref || !img) {
-        rt_image_destroy(ref);
-        rt_image_destroy(img);
-        return;
-    }
+    double seconds[NROWS], mse[NROWS], worst[NROWS];
+    uint64_t used_spp[NROWS];
+    bool ok = scene && ref && img &&
+              error_rows_measure(scene, cp, spp, seed, threads, ref, noise, img, seconds, mse, worst,
+                                 used_spp);
+    bool book = strcmp(scene_name, "book") == 0;
     double book_s = BOOK_ERR_SECONDS * (double)width * (double)width / (600.0 * 600.0);
-    printf("\nerror at %dx%d against %s-{a,b}.pfm (their noise, %.3e, subtracted), %d threads; the "
-           "book's program: %.1f s for 600x600 (%.2f s for %dx%d), MSE %.3g\n",
-           width, width, prefix, noise, threads, BOOK_ERR_SECONDS, book_s, width, width, BOOK_MSE);
-    printf("%-12s %6s %9s %12s %16s %13s\n", "strategy", "spp", "seconds", "MSE", "x_book_equal_err",
-           "worst1%_share");
-    for (size_t i = 0; i < sizeof error_rows / sizeof error_rows[0]; i++) {
-        rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, width, width));
-        char name[32];
-        snprintf(name, sizeof name, "%s", error_rows[i].name);
-        char *plus = strstr(name, "+rr");
-        job.path.russian_roulette = plus != NULL;
-        if (plus)
-            *plus = '\0';
-        if (!rt_bdpt_strategy_parse(name, &job.path))
-            continue;
-        uint64_t n = (uint64_t)((double)spp * error_rows[i].spp_share);
-        job.spp = n > 0 ? n : 1;
-        job.seed = seed;
-        job.threads = threads;
-        /* The best of two renders: the image is the same bits both times,
-         * and the shorter time is the one less disturbed by whatever else
-         * the machine did meanwhile. */
-        rt_render_stats st, again;
-        if (rt_render(&job, img, &st) != 0 || rt_render(&job, img, &again) != 0) {
-            fprintf(stderr, "%s: render failed\n", prog);
-            break;
-        }
-        st.seconds = fmin(st.seconds, again.seconds);
-        double mse = rt_image_mse(img, ref) - noise;
-        printf("%-12s %6llu %9.2f %12.4e %15.1fx %12.1f%%\n", error_rows[i].name,
-               (unsigned long long)job.spp, st.seconds, mse,
-               book_s * BOOK_MSE / (st.seconds * mse), 100.0 * worst_share(img, ref));
-        fflush(stdout);
+    if (ok && book) {
+        printf("\nerror at %dx%d against %s-{a,b}.pfm (their noise, %.3e, subtracted), %d threads, "
+               "median of %d rounds; the book's program: %.1f s for 600x600 (%.2f s for %dx%d), "
+               "MSE %.3g\n",
+               width, width, prefix, noise, threads, NROUNDS, BOOK_ERR_SECONDS, book_s, width, width,
+               BOOK_MSE);
+        printf("%-14s %6s %9s %12s %16s %13s\n", "strategy", "spp", "seconds", "MSE",
+               "x_book_equal_err", "worst1%_share");
+    } else if (ok) {
+        printf("\nerror of %s at %dx%d against %s-{a,b}.pfm (their noise, %.3e, subtracted), %d "
+               "threads, median of %d rounds; efficiency = 1 / (MSE x seconds), x_mixture = its "
+               "ratio to mixture's\n",
+               scene_name, width, width, prefix, noise, threads, NROUNDS);
+        printf("%-14s %6s %9s %12s %11s %10s %13s\n", "strategy", "spp", "seconds", "MSE",
+               "efficiency", "x_mixture", "worst1%_share");
     }
+    double mixture_eff = 0.0;
+    for (size_t i = 0; ok && i < NROWS; i++)
+        if (strcmp(error_rows[i].name, "mixture") == 0)
+            mixture_eff = 1.0 / (mse[i] * seconds[i]);
+    for (size_t i = 0; ok && i < NROWS; i++) {
+        if (used_spp[i] == 0)
+            continue;
+        double eff = 1.0 / (mse[i] * seconds[i]);
+        if (book)
+            printf("%-14s %6llu %9.2f %12.4e %15.1fx %12.1f%%\n", error_rows[i].name,
+                   (unsigned long long)used_spp[i], seconds[i], mse[i], book_s * BOOK_MSE * eff,
+                   100.0 * worst[i]);
+        else
+            printf("%-14s %6llu %9.2f %12.4e %11.4g %9.2fx %12.1f%%\n", error_rows[i].name,
+                   (unsigned long long)used_spp[i], seconds[i], mse[i], eff, eff / mixture_eff,
+                   100.0 * worst[i]);
+    }
+    fflush(stdout);
     rt_image_destroy(ref);
     rt_image_destroy(img);
+    rt_scene_destroy(scene);
+    return ok;
+}
+
+/* The error tables of scene_name for every prefix in the space-separated
+ * list; false when any fails. */
+static bool error_tables(const char *scene_name, uint64_t spp, uint64_t seed, int threads,
+                         const char *prefixes)
+{
+    bool ok = true;
+    /* Room for the longest prefix in load_reference's 4096-byte paths. */
+    char prefix[4096 - sizeof "-a.pfm"];
+    for (const char *p = prefixes; p && *p;) {
+        size_t n = strcspn(p, " ");
+        if (n > 0 && n < sizeof prefix) {
+            memcpy(prefix, p, n);
+            prefix[n] = '\0';
+            ok = error_table(scene_name, spp, seed, threads, prefix) && ok;
+        } else if (n > 0) {
+            fprintf(stderr, "%s: a reference prefix of %zu characters is too long\n", prog, n);
+            ok = false;
+        }
+        p += n + (p[n] == ' ');
+    }
+    return ok;
 }
 
 int main(int argc, char **argv)
@@ -198,7 +298,7 @@ int main(int argc, char **argv)
     uint64_t spp = 100, seed = 1;
     bool quick = getenv("MC_BENCH_QUICK") && strcmp(getenv("MC_BENCH_QUICK"), "0") != 0;
     int max_threads = 2, width = 600;
-    const char *reference = getenv("MC_REF_BOOK");
+    const char *reference = getenv("MC_REF_BOOK"), *lambert = getenv("MC_REF_LAMBERT");
     const app_opt opts[] = {
         {"--spp", APP_COUNT, &spp, "samples per pixel (100)", NULL, 0, 0},
         {"--quick", APP_FLAG, &quick, "10 samples per pixel (also MC_BENCH_QUICK=1)", NULL, 0, 0},
@@ -206,11 +306,16 @@ int main(int argc, char **argv)
         {"--width", APP_INT, &width, "image width and height (600)", NULL, 1, 65536},
         {"--seed", APP_SEED, &seed, "random seed (1)", NULL, 0, 0},
         {"--reference", APP_STRING, &reference,
-         "PREFIX of the converged PREFIX-a.pfm and PREFIX-b.pfm: print the error table "
-         "(default $MC_REF_BOOK)", NULL, 0, 0},
+         "PREFIX of the book scene's converged PREFIX-a.pfm and PREFIX-b.pfm: print the error "
+         "table (default $MC_REF_BOOK, which may list several prefixes separated by spaces)",
+         NULL, 0, 0},
+        {"--lambert-reference", APP_STRING, &lambert,
+         "the same for the lambert scene (default $MC_REF_LAMBERT)", NULL, 0, 0},
     };
-    app_parse(prog, "bench_render [--spp N] [--quick] [--max-threads T] [--reference PREFIX]", argc, argv, opts,
-              sizeof opts / sizeof opts[0], NULL, 0);
+    app_parse(prog,
+              "bench_render [--spp N] [--quick] [--max-threads T] [--reference PREFIX] "
+              "[--lambert-reference PREFIX]",
+              argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
     if (quick && spp == 100)
         spp = 10;
     rt_camera_params cp;
@@ -245,11 +350,14 @@ int main(int argc, char **argv)
     printf("mean linear RGB: %.6f %.6f %.6f (standard errors %.1e %.1e %.1e)\n", rgb[0].value,
            rgb[1].value, rgb[2].value, rgb[0].std_error, rgb[1].std_error, rgb[2].std_error);
     rt_image_destroy(img);
+    bool ok = true;
     if (reference && *reference)
-        error_table(scene, cp, spp, seed, max_threads, reference);
+        ok = error_tables("book", spp, seed, max_threads, reference);
     else
         printf("no reference (make reference, then MC_REF_BOOK=PREFIX or --reference PREFIX): "
                "no error table\n");
+    if (lambert && *lambert)
+        ok = error_tables("lambert", spp, seed, max_threads, lambert) && ok;
     rt_scene_destroy(scene);
-    return 0;
+    return ok ? 0 : 1;
 }

@@ -47,13 +47,24 @@ static uint32_t mix32(uint32_t x)
     return x ^ (x >> 16);
 }
 
+/* The two halves of mc_qmc_stream_seed: the seed's mix, which a caller
+ * that hashes many streams of one seed can keep, and the stream's. */
+static uint64_t seed_mix(uint64_t seed)
+{
+    return mix64(seed ^ UINT64_C(0x9e3779b97f4a7c15));
+}
+
+static uint64_t stream_mix(uint64_t seed_mixed, uint64_t stream)
+{
+    return mix64(seed_mixed ^ (stream + UINT64_C(0x6a09e667f3bcc909)));
+}
+
 uint64_t mc_qmc_stream_seed(uint64_t seed, uint64_t stream)
 {
     /* Both inputs pass through a full-avalanche mix, so neighbouring seeds
      * or streams give unrelated scrambles. The constants only keep (0, 0)
      * away from the fixed point mix64(0) = 0. */
-    uint64_t h = mix64(seed ^ UINT64_C(0x9e3779b97f4a7c15));
-    return mix64(h ^ (stream + UINT64_C(0x6a09e667f3bcc909)));
+    return stream_mix(seed_mix(seed), stream);
 }
 
 /* The key of sub-index k (a dimension, or a padded pair's slot) under the
@@ -239,6 +250,11 @@ static double sobol_xor_keyed(uint32_t i, unsigned dim, uint32_t key)
 
 static double sobol_owen_keyed(uint32_t i, unsigned dim, uint32_t key)
 {
+    /* Dimension 0's generator matrix is the identity read from the top
+     * bit down, so its point is i reversed, and the scramble's first
+     * reversal gives back i: the same bits without the matrix product. */
+    if (dim == 0u)
+        return (double)mc_van_der_corput_u32(lk_hash(i, key)) * 0x1p-32;
     return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), key) * 0x1p-32;
 }
 
@@ -298,21 +314,37 @@ uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key)
  * first scramble take the two halves of the hash of (base, 2d), a second
  * scramble half of that of (base, 2d + 1). Each is a full-avalanche hash
  * (mc_qmc_stream_seed), so keys of different requests, pixels and seeds
- * are independent. */
-double mc_sobol_padded1(uint64_t base, uint32_t dim, uint32_t k, uint32_t n)
+ * are independent. The hash's first half depends on base alone and is
+ * kept in the pixel key. */
+uint64_t mc_sobol_padded_key(uint64_t base)
 {
-    uint64_t h = mc_qmc_stream_seed(base, 2u * (uint64_t)dim);
+    return seed_mix(base);
+}
+
+double mc_sobol_padded1_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n)
+{
+    uint64_t h = stream_mix(pixel_key, 2u * (uint64_t)dim);
     uint32_t index = mc_permutation_element(k, n, (uint32_t)h);
     return sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
 }
 
-void mc_sobol_padded2(uint64_t base, uint32_t dim, uint32_t k, uint32_t n, double u[2])
+void mc_sobol_padded2_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n, double u[2])
 {
-    uint64_t h = mc_qmc_stream_seed(base, 2u * (uint64_t)dim);
-    uint64_t h2 = mc_qmc_stream_seed(base, 2u * (uint64_t)dim + 1u);
+    uint64_t h = stream_mix(pixel_key, 2u * (uint64_t)dim);
+    uint64_t h2 = stream_mix(pixel_key, 2u * (uint64_t)dim + 1u);
     uint32_t index = mc_permutation_element(k, n, (uint32_t)h);
     u[0] = sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
     u[1] = sobol_owen_keyed(index, 1u, (uint32_t)h2);
+}
+
+double mc_sobol_padded1(uint64_t base, uint32_t dim, uint32_t k, uint32_t n)
+{
+    return mc_sobol_padded1_keyed(mc_sobol_padded_key(base), dim, k, n);
+}
+
+void mc_sobol_padded2(uint64_t base, uint32_t dim, uint32_t k, uint32_t n, double u[2])
+{
+    mc_sobol_padded2_keyed(mc_sobol_padded_key(base), dim, k, n, u);
 }
 
 unsigned mc_qmc_max_dim(mc_qmc_method method)

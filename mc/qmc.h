@@ -118,6 +118,14 @@ uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key);
 double mc_sobol_padded1(uint64_t base, uint32_t dim, uint32_t k, uint32_t n);
 void mc_sobol_padded2(uint64_t base, uint32_t dim, uint32_t k, uint32_t n, double u[2]);
 
+/* The same requests for a caller that makes many of one pixel: the part
+ * of every request's hash that depends on base alone, computed once
+ * (mc_sobol_padded_key(base)), then the requests from it, the same bits
+ * as mc_sobol_padded1 and mc_sobol_padded2 of base. */
+uint64_t mc_sobol_padded_key(uint64_t base);
+double mc_sobol_padded1_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n);
+void mc_sobol_padded2_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n, double u[2]);
+
 /* Where the dimensions of a sample come from. */
 typedef enum mc_qmc_method {
     MC_QMC_RANDOM,     /* PCG32: mc_rng_derive(mc_qmc_stream_seed(seed, stream), i) */

@@ -93,6 +93,7 @@ void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, 
     double we;
     if (!rt_bdpt_camera_importance(c, y->p, &px, &we))
         return;
+    rt_splats_prefetch(splats, px);
     vec3 fy = end_factor(y, cam0->p);
     if (is_black(fy))
         return;

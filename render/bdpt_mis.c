@@ -83,7 +83,8 @@ static double remap0(double p) { return p != 0.0 ? p : 1.0; }
  * joined path of n vertices: pl[i], pc[i] as in rt_bdpt_mis_weight
  * (remapped), ok[r] whether strategy r can join. Strategy r + 1 differs
  * from r in making x[r] from the light side, so p_{r+1} / p_r =
- * pl[r] / pc[r]; the weight is 1 / sum_r (p_r / p_s)^2, in O(n). */
+ * pl[r] / pc[r]; the weight is c_s^2 / sum_r c_r^2 (p_r / p_s)^2, in O(n),
+ * with c_r the splat's scale on a path of three vertices (bdpt.h). */
 /* BEGIN SNIPPET bdpt_weight */
 static double weight_from(const double *pl, const double *pc, bool *ok, int n, int s, int twice,
                           bool x1_specular)
@@ -112,11 +113,15 @@ static double weight_from(const double *pl, const double *pc, bool *ok, int n, i
         ok[1] = false;
     if (!ok[s])
         return 0.0;
-    double sum = s == twice ? 2.0 : 1.0, ratio = 1.0;
+    /* c_r^2 of the splat, the last strategy, r = n - 1; the strategies
+     * below it have c_r = 1. */
+    double splat = n == 3 ? RT_BDPT_DIRECT_SPLAT_SCALE * RT_BDPT_DIRECT_SPLAT_SCALE : 1.0;
+    double own = s == n - 1 ? splat : 1.0;
+    double sum = own * (s == twice ? 2.0 : 1.0), ratio = 1.0;
     for (int r = s + 1; r < n; r++) {
         ratio *= pl[r - 1] / pc[r - 1];
         if (ok[r])
-            sum += ratio * ratio * (r == twice ? 2.0 : 1.0);
+            sum += ratio * ratio * (r == twice ? 2.0 : 1.0) * (r == n - 1 ? splat : 1.0);
     }
     ratio = 1.0;
     for (int r = s - 1; r >= 0; r--) {
@@ -124,7 +129,7 @@ static double weight_from(const double *pl, const double *pc, bool *ok, int n, i
         if (ok[r])
             sum += ratio * ratio * (r == twice ? 2.0 : 1.0);
     }
-    return 1.0 / sum;
+    return own / sum;
 }
 /* END SNIPPET bdpt_weight */
 

@@ -30,17 +30,17 @@ rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, m
     if (kind == RT_SAMPLER_SOBOL) {
         s.sobol = true;
         s.n = (uint32_t)spp;
-        s.base = mc_qmc_stream_seed(seed, pixel);
+        s.base = mc_sobol_padded_key(mc_qmc_stream_seed(seed, pixel));
     }
     return s;
 }
 
 /* Dimensions are never handed out twice within a sample (a 1D request
  * moves on by one, as pbrt's Get1D does, a 2D request by two), as
- * mc_sobol_padded1/2 require. */
+ * mc_sobol_padded1_keyed and mc_sobol_padded2_keyed require. */
 double rt_sampler_sobol_1d(rt_sampler *s)
 {
-    double u = mc_sobol_padded1(s->base, s->dim, s->k, s->n);
+    double u = mc_sobol_padded1_keyed(s->base, s->dim, s->k, s->n);
     s->dim += s->reuse_dim ? 0u : 1u;
     return u;
 }
@@ -48,7 +48,7 @@ double rt_sampler_sobol_1d(rt_sampler *s)
 void rt_sampler_sobol_2d(rt_sampler *s, double *u1, double *u2)
 {
     double u[2];
-    mc_sobol_padded2(s->base, s->dim, s->k, s->n, u);
+    mc_sobol_padded2_keyed(s->base, s->dim, s->k, s->n, u);
     *u1 = u[0];
     *u2 = u[1];
     s->dim += 2u;

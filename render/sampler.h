@@ -15,9 +15,10 @@
  *                          the first two dimensions of Sobol point
  *                          perm(k), with the index permutation perm and the
  *                          Owen scrambles keyed by a hash of (seed, p,
- *                          dimension) (mc_sobol_padded1 and
- *                          mc_sobol_padded2, the pixel's part of the hash
- *                          computed once per pixel). Each request is a stratified set
+ *                          dimension) (mc_sobol_padded1_keyed and
+ *                          mc_sobol_padded2_keyed, the pixel's part of the
+ *                          hash computed once per pixel,
+ *                          mc_sobol_padded_key). Each request is a stratified set
  *                          over the pixel's samples; requests differ in
  *                          their permutations and scrambles, which makes
  *                          them independent of one another, so the
@@ -76,7 +77,7 @@ typedef struct rt_sampler {
     bool reuse_dim;
     uint32_t dim; /* sobol: the next dimension of this sample */
     uint32_t k, n; /* sobol: this sample's index and the pixel's sample count */
-    uint64_t base; /* sobol: mc_qmc_stream_seed(seed, pixel) */
+    uint64_t base; /* sobol: mc_sobol_padded_key(mc_qmc_stream_seed(seed, pixel)) */
 } rt_sampler;
 
 /* A sampler drawing every uniform from rng (independent and stratified,

@@ -5,7 +5,8 @@
  *     lamp, camera - wall - wall - lamp, camera - wall - wall - wall -
  *     lamp), from each strategy's density written out here in the area
  *     measure (emitter area, cosine emission, cosine sampling, the film's
- *     density, each turned into area density by cos / distance^2);
+ *     density, each turned into area density by cos / distance^2), the
+ *     direct light's splat scaled by RT_BDPT_DIRECT_SPLAT_SCALE;
  *   - the pinhole camera's importance and its density per unit area on a
  *     300 x 200 film, against the closed forms and the normalisation of
  *     the importance over the film's directions;
@@ -18,8 +19,9 @@
  *     an exact count in a scene where every ray's fate is known, and a
  *     per-sample upper bound from the depth in the book's scene.
  * Every value also has a negative control: the same check against a
- * plausible wrong value (the balance heuristic, a square film, the lens
- * cosine dropped, one depth short, one split level short) must fail.
+ * plausible wrong value (the balance heuristic, the splat unscaled, a
+ * square film, the lens cosine dropped, one depth short, one split level
+ * short) must fail.
  * Compiling with -DVALUES_BREAK=k (1 weights, 2 camera, 3 furnace,
  * 4 segments) perturbs the expected value of check k so that it fails. */
 #include "tests/support/mc_test.h"
@@ -122,20 +124,38 @@ static double strategy_pdf(const hand_path *x, int r, const rt_camera_params *cp
     return p;
 }
 
-/* The weight of strategy s under the heuristic of exponent beta (2: the
- * power heuristic the renderer uses, 1: the balance heuristic): every
- * strategy of a path of Lambertian vertices can make it. */
-static double hand_weight(const hand_path *x, int s, double beta, const rt_camera_params *cp,
-                          double film, double light_area_pdf)
+/* The constant strategy r's density is scaled by in the weights: the
+ * splat (r = 2) of a path of three vertices counts at `direct_splat`. */
+static double strategy_scale(const hand_path *x, int r, double direct_splat)
 {
-    double sum = 0.0, ps = pow(strategy_pdf(x, s, cp, film, light_area_pdf), beta);
+    return x->n == 3 && r == 2 ? direct_splat : 1.0;
+}
+
+/* The weight of strategy s under the heuristic of exponent beta (2: the
+ * power heuristic the renderer uses, 1: the balance heuristic), each
+ * density scaled as the renderer scales it (RT_BDPT_DIRECT_SPLAT_SCALE;
+ * the controls pass 1): every strategy of a path of Lambertian vertices
+ * can make it. */
+static double hand_weight_scaled(const hand_path *x, int s, double beta, const rt_camera_params *cp,
+                                 double film, double light_area_pdf, double direct_splat)
+{
+    double sum = 0.0;
+    double ps = pow(strategy_scale(x, s, direct_splat) * strategy_pdf(x, s, cp, film, light_area_pdf),
+                    beta);
     for (int r = 0; r < x->n; r++)
-        sum += pow(strategy_pdf(x, r, cp, film, light_area_pdf), beta);
+        sum += pow(strategy_scale(x, r, direct_splat) * strategy_pdf(x, r, cp, film, light_area_pdf),
+                   beta);
 #if VALUES_BREAK == 1
     if (s == 1)
         ps *= 1.001; /* the deliberately broken expectation */
 #endif
     return ps / sum;
+}
+
+static double hand_weight(const hand_path *x, int s, double beta, const rt_camera_params *cp,
+                          double film, double light_area_pdf)
+{
+    return hand_weight_scaled(x, s, beta, cp, film, light_area_pdf, RT_BDPT_DIRECT_SPLAT_SCALE);
 }
 
 /* The renderer's vertices of the path: as the weight of the whole path
@@ -212,8 +232,9 @@ static double join_weight_of(const rt_bdpt_ctx *c, const hand_path *h, const rt_
  * densities above: relative error < 1e-12 (the two computations share
  * no code; the tolerance is a few hundred roundings). Also the exception
  * of a lamp the camera sees directly (n = 2): all to s = 0. Negative
- * controls: the balance heuristic's weights (exponent 1) must differ from
- * the renderer's by more than 1e-3 somewhere, and the renderer with
+ * controls: the balance heuristic's weights (exponent 1) and the power
+ * heuristic's without the splat's scale must each differ from the
+ * renderer's by more than 1e-3 somewhere, and the renderer with
  * strategy 1 counted twice (neg.mis_double) from the power heuristic's. */
 static void test_mis_weights_by_hand(void **state)
 {
@@ -228,7 +249,7 @@ static void test_mis_weights_by_hand(void **state)
     rt_material white = rt_lambertian(vec3_make(0.73, 0.73, 0.73));
     double film = film_area(&cp, FILM_W, FILM_H);
     double light_pdf = 1.0 / (130.0 * 105.0); /* the lamp is 130 x 105 */
-    double worst = 0.0, balance_gap = 0.0;
+    double worst = 0.0, balance_gap = 0.0, unscaled_gap = 0.0;
     for (int k = 0; k < 3; k++) {
         hand_path h = weight_path(k);
         rt_bdpt_vertex x[6];
@@ -241,12 +262,16 @@ static void test_mis_weights_by_hand(void **state)
                    sv, got, got_join, want);
             worst = fmax(worst, fmax(rel_err(got, want), rel_err(got_join, want)));
             balance_gap = fmax(balance_gap, fabs(got - hand_weight(&h, sv, 1.0, &cp, film, light_pdf)));
+            unscaled_gap = fmax(unscaled_gap,
+                                fabs(got - hand_weight_scaled(&h, sv, 2.0, &cp, film, light_pdf, 1.0)));
         }
     }
     printf("largest relative error of a weight: %.2e\n", worst);
     assert_true(worst < 1e-12);
     if (!negctl_record(nc, "the balance heuristic's weights", "weights by hand", balance_gap > 1e-3))
         fail_msg("the balance heuristic is not told from the power heuristic: gap %.2e", balance_gap);
+    if (!negctl_record(nc, "the direct light's splat unscaled", "weights by hand", unscaled_gap > 1e-3))
+        fail_msg("the splat's scale on direct light is not seen: gap %.2e", unscaled_gap);
     /* The renderer's own hook: strategy 1 counted twice in the sum. */
     rt_path_settings twice = ps;
     twice.neg.mis_double = 2;
@@ -395,7 +420,10 @@ static void test_camera_importance_and_density(void **state)
     rt_bdpt_vertex x[3];
     renderer_path(&h, s, &c, &white, x);
     double w1 = rt_bdpt_mis_weight(&c, x, 3, 1), w2 = rt_bdpt_mis_weight(&c, x, 3, 2);
-    double recovered = cosine_area_pdf(h.p[0], h.nrm[0], h.p[1], h.nrm[1]) * sqrt(w1 / w2);
+    /* w1 / w2 = p_1^2 / (c p_2)^2 with c the splat's scale (render/bdpt.h),
+     * p_1 = pL pcam and p_2 = pL pemit. */
+    double recovered = cosine_area_pdf(h.p[0], h.nrm[0], h.p[1], h.nrm[1]) *
+                       RT_BDPT_DIRECT_SPLAT_SCALE * sqrt(w1 / w2);
     double want = camera_area_pdf(&cp, film, h.p[1], h.nrm[1]);
 #if VALUES_BREAK == 2
     want = camera_area_pdf(&cp, 4.0 * half_h * half_h, h.p[1], h.nrm[1]);
