@@ -80,19 +80,26 @@ class Page:
         with open(path, "wb") as f:
             f.write(base64.b64decode(data))
 
+    def press(self, setup, result_id, button_id):
+        """Runs the script `setup` (which sets a widget's controls), presses
+        its button and waits until the result element `result_id` counts one
+        more run or reports an error."""
+        before = self.js("""(() => { %s
+          const runs = Number(document.getElementById(%s).dataset.runs || 0);
+          document.getElementById(%s).click();
+          return runs; })()""" % (setup, json.dumps(result_id), json.dumps(button_id)))
+        self.wait_for("(() => { const r = document.getElementById(%s).dataset;"
+                      " return r.state === 'error' || Number(r.runs || 0) > %d; })()"
+                      % (json.dumps(result_id), before), 120)
+
     def run_chi2(self, row, source, n, seed):
         """Sets the controls, presses the button, returns the page's result."""
-        before = self.js("""(() => {
-          const s = document.getElementById('lab-row');
+        self.press("""const s = document.getElementById('lab-row');
           s.value = %s; s.dispatchEvent(new Event('change'));
           document.getElementById('lab-source').value = %s;
           document.getElementById('lab-n').value = '%d';
-          document.getElementById('lab-seed').value = '%d';
-          const runs = Number(document.getElementById('lab-chi2').dataset.runs || 0);
-          document.getElementById('lab-run').click();
-          return runs; })()""" % (json.dumps(row), json.dumps(source), n, seed))
-        self.wait_for("(() => { const r = document.getElementById('lab-chi2').dataset;"
-                      " return r.state === 'error' || Number(r.runs || 0) > %d; })()" % before, 120)
+          document.getElementById('lab-seed').value = '%d';""" % (json.dumps(row), json.dumps(source), n, seed),
+                   "lab-chi2", "lab-run")
         return self.js("""(() => { const r = document.getElementById('lab-chi2');
           return { state: r.dataset.state, line: r.dataset.line, ms: Number(r.dataset.ms),
                    verdict: document.getElementById('lab-verdict').textContent,
@@ -100,17 +107,12 @@ class Page:
                    status: document.getElementById('lab-status').textContent }; })()""")
 
     def run_estimate(self, kind, row, n, seed):
-        before = self.js("""(() => {
-          const k = document.getElementById('est-kind'); k.value = %s;
+        self.press("""const k = document.getElementById('est-kind'); k.value = %s;
           k.dispatchEvent(new Event('change'));
           document.getElementById('est-row').value = %s;
           document.getElementById('est-n').value = '%d';
-          document.getElementById('est-seed').value = '%d';
-          const runs = Number(document.getElementById('lab-estimator').dataset.runs || 0);
-          document.getElementById('est-run').click();
-          return runs; })()""" % (json.dumps(kind), json.dumps(row), n, seed))
-        self.wait_for("(() => { const r = document.getElementById('lab-estimator').dataset;"
-                      " return r.state === 'error' || Number(r.runs || 0) > %d; })()" % before, 120)
+          document.getElementById('est-seed').value = '%d';""" % (json.dumps(kind), json.dumps(row), n, seed),
+                   "lab-estimator", "est-run")
         return self.js("""(() => { const r = document.getElementById('lab-estimator');
           return { state: r.dataset.state, z: Number(r.dataset.z),
                    value: document.getElementById('est-value').textContent,

@@ -21,9 +21,9 @@
 double rt_roulette_survival(vec3 beta, vec3 albedo);
 
 /* Roulette at the vertex after depth + 1 segments, from rr_start segments
- * on (the caller plays only when roulette is asked for): beta_albedo is the throughput that reached
- * the vertex times its albedo, *beta the throughput with the new
- * direction's s/p in; a survivor's *beta is divided by the survival
+ * on (the caller plays only when roulette is asked for): beta_albedo is
+ * the throughput that reached the vertex times its albedo, *beta the
+ * throughput with the new direction's s/p in; a survivor's *beta is divided by the survival
  * probability. Returns false when the path stops here. Draws one uniform
  * from sampler when it plays. */
 bool rt_roulette(int rr_start, int depth, vec3 beta_albedo, vec3 *beta, rt_sampler *sampler);

@@ -254,7 +254,9 @@ static double sample_variance(const rt_image *img, mc_estimate e[3])
 
 /* The mean of the per-pixel variance of one sample of the book scene
  * (64 x 64 pixels, 64 samples, max depth 50, mixture) with roulette
- * decided as `bad` says, against the same without roulette; rr's image
+ * decided after the direction's s/p when `after` is set (the negative
+ * control) and before it otherwise, against the same without roulette;
+ * the roulette image's
  * means must agree with the plain ones (|z| < 4 per channel, false alarm
  * 6.3e-5 each), roulette being unbiased under either rule. */
 static double roulette_variance_ratio(const rt_scene *s, rt_camera_params cp, bool after, uint64_t seed)
