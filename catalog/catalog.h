@@ -74,9 +74,12 @@ typedef struct cat_param {
  * parallelogram corner + a u + b v as (a, b) on [0, 1]^2, where
  * d area = |u x v| da db; a point of a sphere's surface as (cos theta, phi)
  * about its centre, where d area = r^2 d(cos theta) d phi; a direction in
- * a chart of pdf/chart.h (the state's); or, for a lobe about +z, as
- * x = theta / (theta + s) and phi over [0, x(pi/2)] x [0, 2 pi], which
- * spreads a lobe of width about s over many cells. */
+ * a chart of pdf/chart.h (the state's); for a lobe about an axis (+z by
+ * default), as x = theta / (theta + s) and phi over [0, x(theta_max)] x
+ * [0, 2 pi], which spreads a lobe of width about s over many cells; or, for
+ * the directions toward a triangle or parallelogram seen from the origin,
+ * as the polygon's own coordinates (a, b) on [0, 1]^2 (see
+ * cat_use_polygon_chart), whose edges are then cell edges. */
 typedef enum cat_chart_kind {
     CAT_CHART_LINE,
     CAT_CHART_INDEX,
@@ -85,7 +88,8 @@ typedef enum cat_chart_kind {
     CAT_CHART_PARALLELOGRAM,
     CAT_CHART_SURFACE,
     CAT_CHART_DIRECTION,
-    CAT_CHART_LOBE
+    CAT_CHART_LOBE,
+    CAT_CHART_POLYGON
 } cat_chart_kind;
 
 typedef struct cat_state cat_state;
@@ -152,6 +156,11 @@ struct cat_state {
     cat_chart_kind chart;
     pdf_chart dir_chart; /* DIRECTION */
     double lobe_width;   /* LOBE */
+    double lobe_theta_max; /* LOBE: the largest angle to the axis covered, pi/2 or pi */
+    bool lobe_rotated;   /* LOBE: about lobe_frame.n rather than +z */
+    onb lobe_frame;
+    bool poly_triangle;  /* POLYGON: a triangle (else a parallelogram) ... */
+    vec3 poly_corner, poly_e1, poly_e2; /* ... corner + a e1 + a b e2, or corner + a e1 + b e2 */
 };
 
 /* The number of rows and the i-th (0 <= i < count), in `warp list` order. */
@@ -214,8 +223,21 @@ double cat_pdf(const cat_state *s, const double x[3]);
  * wherever the density does: the caller's contract). */
 mc_estimate cat_integrate(pdf_fn f, const cat_state *s, mc_rng *rng, uint64_t n);
 
-/* Uses the lobe chart of width `width` (> 0) for a direction row about +z. */
+/* Uses the lobe chart of width `width` (> 0) for a direction row about +z
+ * over the hemisphere z >= 0. */
 void cat_use_lobe_chart(cat_state *s, double width);
+
+/* The lobe chart of width `width` (> 0) about the unit vector `axis`,
+ * covering the angles to it up to theta_max (in (0, pi]). */
+void cat_use_lobe_chart_about(cat_state *s, double width, vec3 axis, double theta_max);
+
+/* The chart of the directions from the origin toward a polygon: the
+ * triangle with corners a, a + e1, a + e1 + e2 (triangle true; the point
+ * of chart point (x, y) is a + x e1 + x y e2, so that d area =
+ * x |e1 x e2| dx dy) or the parallelogram a + x e1 + y e2 (d area =
+ * |e1 x e2| dx dy). A direction's solid angle element is d area times
+ * |cos| / r^2 at the polygon's point. The plane must miss the origin. */
+void cat_use_polygon_chart(cat_state *s, bool triangle, vec3 a, vec3 e1, vec3 e2);
 
 /* The chart point of x, and the density of the chart's rectangle at a
  * chart point (the row's density times the chart's Jacobian). */

@@ -242,6 +242,62 @@ void cat_use_lobe_chart(cat_state *s, double width)
 {
     s->chart = CAT_CHART_LOBE;
     s->lobe_width = width;
+    s->lobe_theta_max = MC_PI_2;
+    s->lobe_rotated = false;
+}
+
+void cat_use_lobe_chart_about(cat_state *s, double width, vec3 axis, double theta_max)
+{
+    cat_use_lobe_chart(s, width);
+    s->lobe_theta_max = theta_max;
+    s->lobe_rotated = !(axis.x == 0.0 && axis.y == 0.0 && axis.z > 0.0);
+    s->lobe_frame = onb_from_w(vec3_normalize(axis));
+}
+
+void cat_use_polygon_chart(cat_state *s, bool triangle, vec3 a, vec3 e1, vec3 e2)
+{
+    s->chart = CAT_CHART_POLYGON;
+    s->poly_triangle = triangle;
+    s->poly_corner = a, s->poly_e1 = e1, s->poly_e2 = e2;
+}
+
+/* The chart point of direction d toward the polygon: where the ray from
+ * the origin along d meets the polygon's plane, in the polygon's
+ * coordinates; NaN (outside every rectangle) for a ray that misses the
+ * plane. For the triangle, a + s e1 + t e2 with s = x, t = x y gives
+ * x = s and y = t / s. */
+static void polygon_point(const cat_state *s, vec3 d, double out[2])
+{
+    vec3 n = vec3_cross(s->poly_e1, s->poly_e2);
+    double dn = vec3_dot(d, n), t = vec3_dot(s->poly_corner, n) / dn;
+    out[0] = out[1] = (double)NAN;
+    if (!(t > 0.0) || !isfinite(t))
+        return;
+    vec3 q = vec3_sub(vec3_scale(d, t), s->poly_corner);
+    vec3 e1 = s->poly_e1, e2 = s->poly_e2;
+    double uu = vec3_dot(e1, e1), uv = vec3_dot(e1, e2), vv = vec3_dot(e2, e2);
+    double du = vec3_dot(q, e1), dv = vec3_dot(q, e2), det = uu * vv - uv * uv;
+    double a = (du * vv - dv * uv) / det, b = (dv * uu - du * uv) / det;
+    if (s->poly_triangle) {
+        out[0] = a;
+        /* At the corner a = 0 every y is the same point. */
+        out[1] = a > 0.0 ? b / a : 0.0;
+    } else {
+        out[0] = a, out[1] = b;
+    }
+}
+
+/* The direction toward the polygon's point at chart point c, and the
+ * chart's Jacobian d omega / (dx dy): d area / (dx dy) times |cos| / r^2,
+ * with |cos| / r^2 = |n . p| / (|n| |p|^3) at the point p. */
+static vec3 polygon_direction(const cat_state *s, const double c[2], double *jac)
+{
+    vec3 e2 = s->poly_triangle ? vec3_scale(s->poly_e2, c[0]) : s->poly_e2;
+    vec3 p = vec3_madd(vec3_madd(s->poly_corner, s->poly_e1, c[0]), e2, c[1]);
+    vec3 n = vec3_cross(s->poly_e1, s->poly_e2);
+    double r = vec3_length(p), area = vec3_length(n) * (s->poly_triangle ? c[0] : 1.0);
+    *jac = r > 0.0 ? area * fabs(vec3_dot(n, p)) / (vec3_length(n) * r * r * r) : 0.0;
+    return r > 0.0 ? vec3_scale(p, 1.0 / r) : p;
 }
 
 /* The edge coordinates (a, b) of the point x of the parallelogram
@@ -256,10 +312,10 @@ static void parallelogram_coords(const cat_values *p, vec3 x, double out[2])
     out[1] = (dv * uu - du * uv) / det;
 }
 
-/* The lobe chart's upper end: x(pi/2). */
+/* The lobe chart's upper end: x(theta_max). */
 static double lobe_x_max(const cat_state *s)
 {
-    return MC_PI_2 / (MC_PI_2 + s->lobe_width);
+    return s->lobe_theta_max / (s->lobe_theta_max + s->lobe_width);
 }
 
 void cat_chart_point(const cat_state *s, const double x[3], double out[2])
@@ -290,11 +346,16 @@ void cat_chart_point(const cat_state *s, const double x[3], double out[2])
         pdf_chart_point(&s->dir_chart, d, out);
         return;
     case CAT_CHART_LOBE: {
+        if (s->lobe_rotated)
+            d = onb_to_local(&s->lobe_frame, d);
         double theta = smp_spherical_theta(d);
         out[0] = theta / (theta + s->lobe_width);
         out[1] = smp_spherical_phi(d);
         return;
     }
+    case CAT_CHART_POLYGON:
+        polygon_point(s, d, out);
+        return;
     }
 }
 
@@ -340,11 +401,19 @@ double cat_chart_density_of(const cat_state *s, const double c[2], cat_density_f
          * solid angle element is sin theta d theta d phi. */
         double w = s->lobe_width, x = c[0];
         double theta = w * x / (1.0 - x);
-        if (theta > MC_PI_2)
+        if (theta > s->lobe_theta_max)
             return 0.0;
         vec3 d = smp_spherical_direction(cos(theta), c[1]);
+        if (s->lobe_rotated)
+            d = onb_to_world(&s->lobe_frame, d);
         double y[3] = {d.x, d.y, d.z};
         return f(y, ctx) * sin(theta) * w / ((1.0 - x) * (1.0 - x));
+    }
+    case CAT_CHART_POLYGON: {
+        double jac;
+        vec3 d = polygon_direction(s, c, &jac);
+        double y[3] = {d.x, d.y, d.z};
+        return jac > 0.0 ? f(y, ctx) * jac : 0.0;
     }
     }
     return 0.0;
@@ -387,6 +456,7 @@ mc_gof_spec cat_gof_spec(const cat_state *s, const int cells[2])
         break;
     case CAT_CHART_XY:
     case CAT_CHART_PARALLELOGRAM:
+    case CAT_CHART_POLYGON:
         break;
     case CAT_CHART_DISC:
         spec.hi[1] = MC_2PI;

@@ -89,3 +89,52 @@ double mc_sidak_alpha(double alpha, int m)
     return -expm1(log1p(-alpha) / (double)m);
 }
 /* END SNIPPET sidak_alpha */
+
+/* The critical value: Q(crit, dof) = level, by bisection on the tail
+ * (the tail alone, so that the module needs no more of GSL than it has). */
+static double critical_value(int dof, double level)
+{
+    double lo = 0.0, hi = (double)dof + 10.0;
+    while (gsl_cdf_chisq_Q(hi, (double)dof) > level)
+        lo = hi, hi *= 2.0;
+    for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; i++) {
+        double mid = 0.5 * (lo + hi);
+        if (gsl_cdf_chisq_Q(mid, (double)dof) > level)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+double mc_chi2_power(int dof, double level, double lambda)
+{
+    mc_gsl_quiet();
+    double crit = critical_value(dof, level), m = 0.5 * lambda;
+    if (m <= 0.0)
+        return gsl_cdf_chisq_Q(crit, (double)dof);
+    /* Poisson(m) weights outside m +- 12 sqrt(m) + 30 sum below 1e-30. */
+    double spread = 12.0 * sqrt(m) + 30.0;
+    long j0 = (long)fmax(0.0, floor(m - spread)), j1 = (long)ceil(m + spread);
+    double sum = 0.0;
+    for (long j = j0; j <= j1; j++) {
+        double w = exp(-m + (double)j * log(m) - lgamma((double)j + 1.0));
+        sum += w * gsl_cdf_chisq_Q(crit, (double)dof + 2.0 * (double)j);
+    }
+    return fmin(1.0, sum);
+}
+
+double mc_chi2_noncentrality_for_power(int dof, double level, double power)
+{
+    double lo = 0.0, hi = 1.0;
+    while (mc_chi2_power(dof, level, hi) < power && hi < 1e12)
+        lo = hi, hi *= 2.0;
+    while (hi - lo > 1e-6 * hi) {
+        double mid = 0.5 * (lo + hi);
+        if (mc_chi2_power(dof, level, mid) < power)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return hi;
+}

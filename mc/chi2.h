@@ -49,4 +49,18 @@ double mc_chi2_pvalue(double stat, int dof);
  * 1 - (1 - alpha)^(1/m). 0 < alpha < 1, m >= 1. */
 double mc_sidak_alpha(double alpha, int m);
 
+/* The power of the test above: the probability that a statistic
+ * distributed as noncentral chi-square with dof >= 1 degrees of freedom
+ * and noncentrality lambda >= 0 exceeds the level-`level` critical value
+ * of the central one. The noncentral law is the Poisson(lambda / 2)
+ * mixture of central chi-squares with dof + 2j degrees of freedom (the
+ * usual series), summed where its weights are not negligible. Pearson's
+ * statistic for n samples of a law p tested against q is approximately so
+ * distributed with lambda = n sum (p_k - q_k)^2 / q_k. */
+double mc_chi2_power(int dof, double level, double lambda);
+
+/* The noncentrality at which mc_chi2_power reaches `power` (in (level,
+ * 1)), by bisection to a relative 1e-6. */
+double mc_chi2_noncentrality_for_power(int dof, double level, double power);
+
 #endif /* MC_CHI2_H */

@@ -3,9 +3,6 @@
 
 #include <math.h>
 
-/* GSL's usual ample workspace: the densities of mcbox converge in far
- * fewer subintervals. */
-#define QUAD_LIMIT 1000
 
 int mc_gof_cell_count(const mc_gof_spec *spec)
 {
@@ -64,24 +61,25 @@ static double density_2d(double x, double y, void *params)
 }
 
 /* BEGIN SNIPPET gof_integrate_box */
-static double integrate_box(const mc_gof_spec *s, mc_quad *q, double x0, double x1, double y0,
-                            double y1)
+/* The density's integral over the box into *v, GSL's error estimate into
+ * *err; the status is GSL's: non-zero when it could not certify its 1e-11
+ * target (a jump of the density inside the cell, typically). The value is
+ * still its best; callers that must know how good it is keep the status. */
+static int integrate_box(const mc_gof_spec *s, mc_quad *q, double x0, double x1, double y0,
+                         double y1, double *v, double *err)
 {
-    double v = 0.0;
-    /* A non-zero status means GSL could not certify its 1e-11 target (a
-     * jump of the density inside the cell, typically); the best value it
-     * returns is still far more accurate than a histogram can resolve. */
+    *v = 0.0;
     if (s->dims == 1)
-        (void)mc_quad_1d(q, (mc_fn1){density_1d, (void *)s}, x0, x1, &v, NULL);
-    else
-        (void)mc_quad_2d(q, (mc_fn2){density_2d, (void *)s}, x0, x1, y0, y1, &v, NULL);
-    return v;
+        return mc_quad_1d(q, (mc_fn1){density_1d, (void *)s}, x0, x1, v, err);
+    return mc_quad_2d(q, (mc_fn2){density_2d, (void *)s}, x0, x1, y0, y1, v, err);
 }
 /* END SNIPPET gof_integrate_box */
 
 double mc_gof_integrate(const mc_gof_spec *spec, mc_quad *q)
 {
-    return integrate_box(spec, q, spec->lo[0], spec->hi[0], spec->lo[1], spec->hi[1]);
+    double v, err;
+    (void)integrate_box(spec, q, spec->lo[0], spec->hi[0], spec->lo[1], spec->hi[1], &v, &err);
+    return v;
 }
 
 void mc_gof_cell_box(const mc_gof_spec *spec, int c, double box[4])
@@ -99,23 +97,41 @@ void mc_gof_cell_box(const mc_gof_spec *spec, int c, double box[4])
     }
 }
 
-int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob)
+int mc_gof_cell_probs_checked(const mc_gof_spec *spec, double *prob, double *err, int *status)
 {
     int cells = mc_gof_cell_count(spec);
     int failed = 0;
 #pragma omp parallel reduction(| : failed)
     {
-        mc_quad *q = mc_quad_create(QUAD_LIMIT);
+        mc_quad *q = mc_quad_create(MC_GOF_QUAD_LIMIT);
         failed |= q == NULL;
 #pragma omp for schedule(dynamic, 16)
         for (int c = 0; c < cells; c++) {
-            double b[4];
+            double b[4], v = (double)NAN, e = (double)NAN;
+            int st = -1;
             mc_gof_cell_box(spec, c, b);
-            prob[c] = q ? integrate_box(spec, q, b[0], b[1], b[2], b[3]) : (double)NAN;
+            if (q)
+                st = integrate_box(spec, q, b[0], b[1], b[2], b[3], &v, &e);
+            prob[c] = v;
+            if (err)
+                err[c] = e;
+            if (status)
+                status[c] = st;
         }
         mc_quad_destroy(q);
     }
     return failed ? -1 : 0;
+}
+
+int mc_gof_box_integral(const mc_gof_spec *spec, mc_quad *q, const double box[4], double *v,
+                        double *err)
+{
+    return integrate_box(spec, q, box[0], box[1], box[2], box[3], v, err);
+}
+
+int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob)
+{
+    return mc_gof_cell_probs_checked(spec, prob, NULL, NULL);
 }
 
 /* BEGIN SNIPPET gof_expected */

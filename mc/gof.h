@@ -65,6 +65,11 @@ int mc_gof_cell_count(const mc_gof_spec *spec);
  * of thumb for the chi-square approximation). */
 #define MC_GOF_MIN_EXPECTED 5.0
 
+/* The subintervals GSL's adaptive rule may use per level, for each cell:
+ * GSL's usual ample workspace; the densities of mcbox converge in far
+ * fewer. */
+#define MC_GOF_QUAD_LIMIT 1000
+
 /* The bounds of cell c (0 <= c < mc_gof_cell_count): box = {x0, x1, y0,
  * y1}, y0 = y1 = 0 when dims == 1. Edges come from the index, not by
  * accumulation, so the last edge is exactly hi. */
@@ -85,6 +90,18 @@ double mc_gof_histogram(const mc_gof_spec *spec, mc_rng *rng, uint64_t n, double
  * OpenMP threads, each with its own workspace. Returns 0, or -1 when a
  * workspace could not be allocated (its cells are then NaN). */
 int mc_gof_cell_probs(const mc_gof_spec *spec, double *prob);
+
+/* The same, keeping what the quadrature knows of each cell: GSL's error
+ * estimate into err[c] and its status into status[c] (0 when it reached
+ * its target; non-zero, typically where the density jumps inside the
+ * cell, when prob[c] is only its best value). err and status may be NULL. */
+int mc_gof_cell_probs_checked(const mc_gof_spec *spec, double *prob, double *err, int *status);
+
+/* The density's integral over the box {x0, x1, y0, y1} (y ignored in 1D)
+ * into *v and GSL's error estimate into *err, with the workspace q (whose
+ * limit bounds the effort); returns GSL's status as above. */
+int mc_gof_box_integral(const mc_gof_spec *spec, mc_quad *q, const double box[4], double *v,
+                        double *err);
 
 /* Writes n times the density's integral over every cell to
  * expct[0 .. mc_gof_cell_count), 0 for cells below MC_GOF_ZERO_CELL_PROB,
