@@ -61,6 +61,7 @@ help:
 	@echo "make outside-check  install into build/stage, then build and test outside/ against it"
 	@echo "make exercises every reader's exercise: stubs and slips must fail, references pass"
 	@echo "make exercise NAME=cosine  judge your answer to one exercise (exercises/README.md)"
+	@echo "make real-table  the check's verdicts on samplers from the papers, every door, and its false-alarm rate"
 
 deps:
 	@sh tools/deps.sh $(DEB_PACKAGES)
@@ -118,3 +119,4 @@ include mk/install.mk
 include mk/fuzz.mk
 include mk/exercises.mk
 include mk/lab.mk
+include mk/real.mk

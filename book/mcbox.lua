@@ -418,10 +418,14 @@ end
 -- A link to #id that names an anchor of another chapter becomes
 -- page.html#id on the HTML pages (one page per chapter); the EPUB, one
 -- document, resolves #id itself. BOOK_STATE/anchors lists "id page" pairs.
+-- A link whose text is a chapter's number ("chapter 6", "Chapters 8", or
+-- the bare "6" of "chapters [3](#ch-sphere) and [4](#ch-scattering)")
+-- must point into the page of that number (06-tests.html): a renumbered
+-- chapter or a slip of the finger stops the build, in every format.
 
 local anchors
 local function link(el)
-  if no_links or not el.target:match("^#") then return nil end
+  if not el.target:match("^#") then return nil end
   if not anchors then
     anchors = {}
     local f = io.open(state .. "/anchors", "r")
@@ -434,6 +438,19 @@ local function link(el)
     end
   end
   local page = anchors[el.target:sub(2)]
+  local text = pandoc.utils.stringify(el.content)
+  local said = text:match("^[Cc]hapters? (%d+)$") or text:match("^(%d+)$")
+  if said and page then
+    local is = page:match("^(%d+)%-")
+    if is and tonumber(is) ~= tonumber(said) then
+      local where = chapter_where("[" .. text .. "](" .. el.target .. ")")
+      if where == chapter .. ":1" then where = chapter_where("](" .. el.target .. ")") end
+      die(where,
+          "link '" .. text .. "' points at " .. el.target .. ", which is in chapter " ..
+          tonumber(is) .. " (" .. page .. ")")
+    end
+  end
+  if no_links then return nil end
   local here = chapter:match("([^/]+)%.md$")
   if page and page ~= here .. ".html" then el.target = page .. el.target end
   return el

@@ -30,9 +30,12 @@ mc_rng *chk_stream_rng(mcbox_stream *s)
     return &s->rng;
 }
 
+#define STR2(x) #x
+#define STR(x) STR2(x)
+
 const char *mcbox_version(void)
 {
-    return "0.1.0";
+    return STR(MCBOX_VERSION_MAJOR) "." STR(MCBOX_VERSION_MINOR) "." STR(MCBOX_VERSION_PATCH);
 }
 
 static const char *const domain_names[] = {

@@ -249,11 +249,13 @@ typedef struct mcbox_check_result {
                               four, and the density is probed just inside every side; where
                               the two rules disagree or a side jumps, the cell is halved,
                               worst parts first, up to quad_depth times, until the estimate
-                              falls below 1e-6 or 2^23 densities were asked for. A part's
+                              falls below 1e-5 or 2^23 densities were asked for. A part's
                               estimate is 3 |its two rules' difference| plus 3 |its
                               siblings' sum - their parent's rule| shared among them, plus
-                              0.03 |its value| for each side that jumps; with pdf, GSL's
-                              estimate on smooth cells. Above quad_error_max the verdict is
+                              0.03 times its measure times the larger density at each side
+                              where the density drops to 0 (or by 1000x) between the
+                              outermost node and the edge; with pdf, GSL's estimate on
+                              smooth cells. Above quad_error_max the verdict is
                               undetermined */
     uint64_t pdf_reported; /* samples that reported their own pdf */
     double pdf_mismatch;   /* largest |reported - pdf(x)| / pdf(x) over them (0 if none) */

@@ -213,8 +213,10 @@ static void decide(mcbox_check *c, const double *expct, size_t cells, bool finit
         r->undetermined = true;
         chk_set_message(r,
                         "undetermined: the quadrature's error estimate %.3g on the density's "
-                        "integral exceeds quad_error_max %.3g (the density jumps inside cells); "
-                        "pass a domain whose chart follows its edges or a larger quad_depth",
+                        "integral exceeds quad_error_max %.3g (the density jumps, or is infinite, "
+                        "inside cells); pass a domain whose chart follows its edges, a lobe chart "
+                        "(lobe width and axis) about a point where it is infinite, or a larger "
+                        "quad_depth",
                         q->error, c->o.quad_error_max);
     } else if (!(r->pdf_mismatch <= c->o.pdf_tol)) {
         chk_set_message(r,

@@ -201,7 +201,8 @@ int main(int argc, char **argv)
     for (int m = 0; m < N_METHODS; m++)
         if (app_selected(method, methods[m]) && refuse(m, (unsigned)dim, n, why, sizeof why))
             app_fail("qmc", "%s", why);
-    /* About 3e-8 s per evaluation and dimension (measured at 1e6, D = 2). */
+    /* A rough cost per evaluation and dimension, used only for the time
+     * the announcement foretells; nothing else depends on it. */
     app_announce_samples("qmc", n * r, 3e-8 * dim * (strcmp(method, "all") == 0 ? N_METHODS : 1));
     app_mpi_setup_done(&mpi);
 

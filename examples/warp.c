@@ -1,7 +1,7 @@
 /* examples/warp.c - the command-line face of samplers/ and pdf/: list the
  * warps, draw samples, evaluate densities, and test one against the other.
  *
- *   warp list                                      name domain measure params
+ *   warp list                       name domain measure params # what it is
  *   warp sample NAME [--param k=v]... [--n N] [--seed S]   one point per line
  *   warp pdf NAME [--param k=v]...     points on stdin -> one density per line
  *   warp chi2 NAME [--param k=v]... [--n N] [--seed S] [--alpha A]
@@ -42,12 +42,13 @@
 #define MAX_PARAMS 16
 
 static const char USAGE[] =
-    "usage: warp list\n"
+    "usage: warp list                         (name domain measure params # density)\n"
     "       warp sample NAME [--param k=v]... [--n N] [--seed S]\n"
     "       warp pdf NAME [--param k=v]...      (points on stdin)\n"
     "       warp chi2 NAME [--param k=v]... [--n N] [--seed S] [--alpha A]\n"
     "       warp serve NAME [--param k=v]...    (mcbox-check --exec: commands on stdin)\n"
     "--samples is a synonym of --n. chi2 exits 0 on pass, 1 on fail; bad input exits 2.\n"
+    "--param takes one assignment or several separated by blanks, as list prints them.\n"
     "A command refuses the options it does not take (list takes none, pdf only --param).\n"
     "pdf of discrete and alias reads outcome indices: whole numbers from 0 to k-1.\n"
     APP_NUMBER_GRAMMAR "\n";
@@ -132,13 +133,67 @@ static args parse(int argc, char **argv)
     return a;
 }
 
+/* What each row's density is, in one line: the name says which warp, not
+ * always which law (quad-light samples the light's area, not its solid
+ * angle uniformly). Keyed by row name; tests/test_check_cli.c checks that
+ * every row of `warp list` has one. */
+static const struct {
+    const char *name, *text;
+} DESCRIPTIONS[] = {
+    {"square", "uniform on the unit square, density 1"},
+    {"disc-polar", "uniform on the unit disc by polar coordinates, r = sqrt(u); density 1/pi"},
+    {"disc-concentric", "uniform on the unit disc by Shirley-Chiu's concentric map; density 1/pi"},
+    {"triangle", "uniform on the triangle (0,0) (1,0) (0,1), the square folded; density 2"},
+    {"parallelogram", "uniform on corner + s u + t v (area), density 1 / |u x v|"},
+    {"sphere-surface", "uniform on the sphere's surface (area), density 1 / (4 pi radius^2)"},
+    {"sphere-inverse", "uniform directions by z = 1 - 2 u2, phi = 2 pi u1; density 1 / (4 pi)"},
+    {"sphere-gaussian", "uniform directions: three normal deviates (4 uniforms), normalized"},
+    {"sphere-rejection", "uniform directions: points of the cube kept inside the ball, normalized"},
+    {"hemisphere", "uniform directions of z >= 0 by z = 1 - u2; density 1 / (2 pi)"},
+    {"hemisphere-flip", "uniform sphere directions with z -> |z|; density 1 / (2 pi), no inverse"},
+    {"cosine", "cosine-weighted, z = sqrt(1 - u2) (the polar disc lifted); density cos(theta) / pi"},
+    {"cosine-malley", "cosine-weighted, the concentric disc lifted (Malley); density cos(theta) / pi"},
+    {"cosine-acos", "cosine-weighted, theta = acos(1 - 2 u2) / 2; density cos(theta) / pi"},
+    {"theta-phi", "theta and phi uniform (not uniform directions): density 1 / (pi^2 sin theta)"},
+    {"phong", "Phong lobe about +z: density (n + 1) cos^n(theta) / (2 pi)"},
+    {"ggx", "GGX (Trowbridge-Reitz) normals of roughness alpha: density D(h) cos(theta_h)"},
+    {"cone", "uniform directions in the cone cos(theta) >= cos_max about +z"},
+    {"linear", "x on [0, 2] with density x / 2 (x = 2 sqrt(u))"},
+    {"quadratic", "x on [0, 2] with density 3 x^2 / 8 (x = 2 cbrt(u))"},
+    {"sine", "x on [0, pi] with density sin(x) / 2 (x = acos(1 - 2u))"},
+    {"log-ends", "x on [0, pi] with density -ln(2 d / pi) / pi, d the distance to an end"},
+    {"discrete", "outcome k with probability weight k / sum, by binary search of the CDF"},
+    {"alias", "outcome k with probability weight k / sum, by Walker's alias table"},
+    {"quad-light", "toward a parallelogram light: uniform over its area (not its solid angle), "
+                   "density dist^2 / (|cos| A)"},
+    {"sphere-light", "uniform directions in the cone the sphere subtends from the origin"},
+    {"mixture", "w x cosine-pdf + (1 - w) x quad-light, one of the two drawn with those weights"},
+    {"uniform-pdf", "the uniform pdf object of the whole sphere: density 1 / (4 pi)"},
+    {"cosine-pdf", "the cosine pdf object about normal: density max(cos, 0) / pi"},
+    {"light-list", "the quad light or the sphere light, each drawn with probability 1/2"},
+};
+
+/* The row's line of description, or NULL when it has none. */
+static const char *description(const char *name)
+{
+    for (size_t k = 0; k < sizeof DESCRIPTIONS / sizeof DESCRIPTIONS[0]; k++)
+        if (strcmp(DESCRIPTIONS[k].name, name) == 0)
+            return DESCRIPTIONS[k].text;
+    return NULL;
+}
+
+/* name, domain, measure, the parameters as --param takes them (one
+ * quoted --param 'k=v k=v' or one option each), then after '#' what the
+ * density is; a negative control says what is wrong with it. */
 static void list(void)
 {
     for (size_t i = 0; i < cat_count(); i++) {
         const cat_row *r = cat_at(i);
         char defaults[256];
         cat_param_defaults(r, defaults, sizeof defaults);
-        printf("%-17s %-24s %-12s %s\n", r->name, r->domain, r->measure, defaults);
+        const char *d = r->wrong ? r->wrong : description(r->name);
+        printf("%-17s %-24s %-12s %s  # %s\n", r->name, r->domain, r->measure, defaults,
+               d ? d : "(no description)");
     }
 }
 
@@ -370,9 +425,22 @@ int main(int argc, char **argv)
         app_fail(PROG, "unknown sampler '%s' (see warp list)", a.name);
     cat_values p;
     cat_defaults(r, &p);
-    char err[256];
-    for (int i = 0; i < a.n_params; i++)
-        if (!cat_set_param(r, &p, a.params[i], err, sizeof err))
+    char err[256], storage[2048];
+    const char *assign[MAX_PARAMS];
+    int n_assign = 0;
+    size_t used = 0;
+    /* One --param may hold several assignments, as `warp list` prints
+     * them: "corner=0,0,1 u=1,0,0 v=0,1,0". */
+    for (int i = 0; i < a.n_params; i++) {
+        int k = app_split_assignments(a.params[i], storage + used, sizeof storage - used,
+                                      assign + n_assign, MAX_PARAMS - n_assign, err, sizeof err);
+        if (k < 0)
+            app_fail(PROG, "--param '%s': %s", a.params[i], err);
+        for (int j = 0; j < k; j++, n_assign++)
+            used += strlen(assign[n_assign]) + 1;
+    }
+    for (int i = 0; i < n_assign; i++)
+        if (!cat_set_param(r, &p, assign[i], err, sizeof err))
             app_fail(PROG, "%s", err);
     static cat_state s; /* large (the tables' storage) and self-referencing */
     if (!cat_prepare(r, &p, &s, err, sizeof err))

@@ -14,13 +14,19 @@
  *        1. radical_inverse2(i) equals mc_radical_inverse(i, 2) of
  *           mc/qmc.h bit for bit for every i < 2^16 and for 10^4 random
  *           i < 2^32 (rng mc_rng_derive(13101, 0));
- *        2. for n = 2^m, m = 2 .. 12, the n points form a (0, m, 2)-net in
+ *        2. the coordinates: for n = 1, 7, 1000, 4096 and 65535 and every
+ *           i < n, x[0] within 2^-52 of i / n (i * (1.0 / n) rounds twice,
+ *           and passes) and x[1] equal to mc_radical_inverse(i, 2) bit for
+ *           bit. The net of test 3 alone would pass the two coordinates
+ *           swapped, or (i + 1/2) / n: both nets, neither this set;
+ *        3. for n = 2^m, m = 2 .. 12, the n points form a (0, m, 2)-net in
  *           base 2: every elementary interval [a 2^-k, (a+1) 2^-k) x
  *           [b 2^-(m-k), (b+1) 2^-(m-k)) of area 1/n, k = 0 .. m, holds
  *           exactly one point.
  *
  * Run:   make exercise NAME=hammersley
  */
+#include <math.h>
 #include <stdlib.h>
 
 #include "exercises/check_exercise.h"
@@ -95,26 +101,60 @@ static bool is_net(int m, int *bad_k)
     return ok;
 }
 
+/* The number of points whose coordinates are not (i / n, the radical
+ * inverse of i), over every i < n of a few n, with the first such (i, n)
+ * and the number of points looked at.
+ * 2^-52: i * (1.0 / n) differs from i / n by two roundings, each at most
+ * 2^-53 relative, of numbers below 1. */
+static int coordinate_mismatches(uint64_t *first_i, uint64_t *first_n, uint64_t *points)
+{
+    static const uint64_t ns[] = {1, 7, 1000, 4096, 65535};
+    int bad = 0;
+    *points = 0;
+    for (size_t k = 0; k < sizeof ns / sizeof ns[0]; k++)
+        for (uint64_t i = 0; i < ns[k]; i++, ++*points) {
+            double x[2] = {-1.0, -1.0};
+            hammersley(i, ns[k], x);
+            bool ok = fabs(x[0] - (double)i / (double)ns[k]) <= 0x1p-52 &&
+                      x[1] == mc_radical_inverse(i, 2);
+            if (!ok && bad++ == 0)
+                *first_i = i, *first_n = ns[k];
+        }
+    return bad;
+}
+
 static void judge(ex_judge *j)
 {
     uint64_t first = 0, seed = ex_seed(j, 13101);
     int bad = bit_mismatches(seed, &first);
     const char *name = "radical inverse, bit for bit";
     if (bad)
-        ex_check_exact(j, name, false, "%d of 75536 differ from mc_radical_inverse, first i = %llu",
-                       bad, (unsigned long long)first);
+        ex_check_exact(j, "bits", name, false,
+                       "%d of 75536 differ from mc_radical_inverse, first i = %llu", bad,
+                       (unsigned long long)first);
     else
-        ex_check_exact(j, name, true, "all 75536 equal mc_radical_inverse(i, 2)");
+        ex_check_exact(j, "bits", name, true, "all 75536 equal mc_radical_inverse(i, 2)");
+    uint64_t first_n = 0, points = 0;
+    int wrong = coordinate_mismatches(&first, &first_n, &points);
+    name = "coordinates (i / n, radical inverse)";
+    if (wrong)
+        ex_check_exact(j, "coords", name, false,
+                       "%d of %llu points wrong, first i = %llu of n = %llu", wrong,
+                       (unsigned long long)points, (unsigned long long)first,
+                       (unsigned long long)first_n);
+    else
+        ex_check_exact(j, "coords", name, true, "all %llu points of n = 1, 7, 1000, 4096, 65535",
+                       (unsigned long long)points);
     int failed_m = 0, bad_k = -1;
     for (int m = 2; m <= 12 && failed_m == 0; m++)
         if (!is_net(m, &bad_k))
             failed_m = m;
     name = "(0,m,2)-net, m = 2..12";
     if (failed_m)
-        ex_check_exact(j, name, false, "m = %d: an interval of 2^-%d x 2^-%d holds 0 or 2+ points",
+        ex_check_exact(j, "net", name, false, "m = %d: an interval of 2^-%d x 2^-%d holds 0 or 2+ points",
                        failed_m, bad_k, failed_m - bad_k);
     else
-        ex_check_exact(j, name, true, "every elementary interval of area 2^-m holds one point");
+        ex_check_exact(j, "net", name, true, "every elementary interval of area 2^-m holds one point");
 }
 
-const ex_exercise ex_this = {"hammersley", "13 (#ch-qmc)", EX_VARIANT, judge};
+const ex_exercise ex_this = {"hammersley", "13 (#ch-qmc)", EX_VARIANT, judge, EX_KIND, EX_INTENDED};

@@ -6,7 +6,8 @@
  * 1 - w. The two components are given below, value and generate each.
  * WRITE  mixture_generate(m, u0, u1, u2): a direction from the mixture:
  *        u0 in [0, 1) picks the component (the cosine lobe with
- *        probability w), u1 and u2 sample the picked one;
+ *        probability w: u0 < w, or u0 >= 1 - w, both pass), u1 and u2
+ *        sample the picked one;
  *        mixture_value(m, d): the mixture's density at the unit direction
  *        d, PER UNIT SOLID ANGLE.
  * HINT   The value is NOT the density of the component that was picked:
@@ -14,10 +15,17 @@
  *        sum over ALL components (chapter 9's "very important detail").
  * JUDGED by the public check (check/check.h) on the catalog's "mixture"
  *        row with w = 0.3, a tilted normal and a tilted light, charted on
- *        the light's plane (which covers every direction): 10^5 samples
- *        from seed 9101, Pearson's chi-square against mixture_value
- *        integrated over each cell, its integral within 1e-6 of 1, every
- *        direction a unit vector.
+ *        the light's plane (which covers every direction), 10^5 samples
+ *        from seed 9101:
+ *        1. your directions against YOUR mixture_value: Pearson's
+ *           chi-square against it integrated over each cell, its integral
+ *           within 1e-6 of 1, every direction a unit vector;
+ *        2. the same directions against the law asked for, w cosine_value
+ *           + (1 - w) light_value: the chi-square again, and your
+ *           mixture_value at every sample within 1e-6 (relative) of it;
+ *        3. your mixture_value against that law at the centres of
+ *           64 x 128 cells of (cos theta, phi) over the whole sphere,
+ *           relative 1e-6.
  *
  * Run:   make exercise NAME=mixture
  */
@@ -95,18 +103,28 @@ static double check_pdf(const double *x, void *ctx)
     return mixture_value(ctx, ex_vec3(x));
 }
 
+/* The law the exercise asks for: w cosine + (1 - w) light; ctx points to
+ * the mixture. */
+static double mixture_law(const double *x, void *ctx)
+{
+    const mixture *m = ctx;
+    vec3 d = ex_vec3(x);
+    return m->w * cosine_value(m, d) + (1.0 - m->w) * light_value(m, d);
+}
+
 static void judge(ex_judge *j)
 {
     /* The same mixture as the context and as the row's parameters. */
     static const mixture m = {0.3, {0.36, -0.48, 0.8}, {-0.7, -0.4, 1.2}, {1.0, 0.1, 0.35},
                               {-0.15, 0.8, 0.45}};
+    static const ex_law law = {"the mixture 0.3 cosine + 0.7 light", mixture_law, (void *)&m};
     mcbox_sampler s = mcbox_sampler_init(MCBOX_CATALOG);
     s.domain.row = "mixture";
     s.domain.params = "w=0.3 normal=0.36,-0.48,0.8 corner=-0.7,-0.4,1.2 u=1,0.1,0.35 "
                       "v=-0.15,0.8,0.45";
     s.uniforms = 3;
     s.sample = check_sample, s.pdf = check_pdf, s.ctx = (void *)&m;
-    ex_check_sampler(j, "cosine + light, w = 0.3", &s, 9101, 100000);
+    ex_check_sampler_law(j, "cosine + light, w = 0.3", &s, &law, 9101, 100000);
 }
 
-const ex_exercise ex_this = {"mixture", "9 (#ch-mixture)", EX_VARIANT, judge};
+const ex_exercise ex_this = {"mixture", "9 (#ch-mixture)", EX_VARIANT, judge, EX_KIND, EX_INTENDED};

@@ -12,13 +12,19 @@
  *        (a miss); such a variable with P(hit) = p has variance
  *        16 p (1 - p). The standard error of the mean of n is
  *        sqrt(variance / n). Count in uint64_t.
- * JUDGED by two statistical tests:
+ * JUDGED by three statistical tests:
  *        1. a z-test of one estimate from 10^6 points (rng
  *           mc_rng_derive(1001, 0)) against pi;
  *        2. the coverage of the error bar: 2000 estimates from 10^4
  *           points each (rngs mc_rng_derive(1002, i)); value +- 1.96
  *           std_error must hold pi in 95% of them (a binomial test of the
- *           count): an error bar that is too narrow or too wide fails.
+ *           count): an error bar that is too narrow or too wide fails;
+ *        3. the law of one sample: the variance that the estimate of test
+ *           1 reports against hit-or-miss's 16 p (1 - p), p = pi/4 (a
+ *           z-test of the sample variance, whose spread comes from the
+ *           fourth moment of a 0/4 variable). Another unbiased estimator
+ *           of pi, with an honest error bar of its own, passes 1 and 2
+ *           and fails here: it is not hit-or-miss.
  *
  * Run:   make exercise NAME=pi
  */
@@ -50,7 +56,8 @@ static void judge(ex_judge *j)
 {
     uint64_t seed = ex_seed(j, 1001), n = ex_samples(j, 1000000);
     mc_rng rng = mc_rng_derive(seed, 0);
-    ex_check_estimate(j, "z-test against pi", estimate_pi(&rng, n), MC_PI, seed);
+    mc_estimate one = estimate_pi(&rng, n);
+    ex_check_estimate(j, "z-test", "z-test against pi", one, MC_PI, seed);
     /* Two-sided 95%: the normal quantile 1.959963985. */
     const uint64_t runs = 2000, per_run = 10000;
     uint64_t covered = 0, cseed = ex_seed(j, 1002);
@@ -59,7 +66,12 @@ static void judge(ex_judge *j)
         mc_estimate e = estimate_pi(&r, per_run);
         covered += fabs(e.value - MC_PI) <= 1.959963985 * e.std_error;
     }
-    ex_check_coverage(j, "95% error bars hold pi", covered, runs, 0.95, cseed);
+    ex_check_coverage(j, "coverage", "95% error bars hold pi", covered, runs, 0.95, cseed);
+    /* One sample is 4 with probability p = pi/4, else 0: variance 16 p q
+     * and fourth central moment 256 p q (1 - 3 p q), q = 1 - p. */
+    double p = MC_PI / 4.0, q = 1.0 - p;
+    ex_check_variance(j, "variance", "variance of one sample", one, 16.0 * p * q,
+                      256.0 * p * q * (1.0 - 3.0 * p * q), "hit-or-miss, 16 p (1 - p)", seed);
 }
 
-const ex_exercise ex_this = {"pi", "1 (#ch-pi)", EX_VARIANT, judge};
+const ex_exercise ex_this = {"pi", "1 (#ch-pi)", EX_VARIANT, judge, EX_KIND, EX_INTENDED};

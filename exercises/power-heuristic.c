@@ -83,7 +83,7 @@ static void judge(ex_judge *j)
         if (!(fabs(w - r[4]) <= 1e-12) && wrong++ == 0)
             snprintf(first, sizeof first, "; first: %.6g where %.6g is due", w, r[4]);
     }
-    ex_check_exact(j, "weights by hand", wrong == 0, "%d of %zu wrong%s", wrong, rows, first);
+    ex_check_exact(j, "by-hand", "weights by hand", wrong == 0, "%d of %zu wrong%s", wrong, rows, first);
     mc_rng rng = mc_rng_derive(ex_seed(j, 11102), 0);
     double worst = 0.0;
     for (int i = 0; i < 10000; i++) {
@@ -94,12 +94,13 @@ static void judge(ex_judge *j)
         double e = fabs(power_heuristic(nf, f, ng, g) + power_heuristic(ng, g, nf, f) - 1.0);
         worst = e > worst || isnan(e) ? e : worst;
     }
-    ex_check_exact(j, "weights sum to 1", worst <= 1e-12,
+    ex_check_exact(j, "sum", "weights sum to 1", worst <= 1e-12,
                    "largest |w(f,g) + w(g,f) - 1| at 10^4 points: %.3g (<= 1e-12)", worst);
     uint64_t seed = ex_seed(j, 11101);
     mc_rng r = mc_rng_derive(seed, 0);
     mc_estimate e = mis_estimate(&r, ex_samples(j, 1000000));
-    ex_check_estimate(j, "MIS estimate, z-test against 8/3", e, 8.0 / 3.0, seed);
+    ex_check_estimate(j, "z-test", "MIS estimate, z-test against 8/3", e, 8.0 / 3.0, seed);
 }
 
-const ex_exercise ex_this = {"power-heuristic", "11 (#ch-nee-mis)", EX_VARIANT, judge};
+const ex_exercise ex_this = {"power-heuristic", "11 (#ch-nee-mis)", EX_VARIANT, judge,
+                             EX_KIND,           EX_INTENDED};

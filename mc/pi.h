@@ -68,8 +68,8 @@ mc_estimate mc_pi_plain(uint64_t seed, uint64_t n, int threads, uint64_t *hits);
  * the squared difference of each pair's two 0/4 values estimates the sum of
  * their variances plus the square of their mean difference, so the sum
  * over pairs, divided by n^2, over-estimates the grid's variance: the error
- * bar is conservative (measured over 400 seeds at n = 10^4 and 10^6: 1.5
- * times the true standard error). A cell left without a partner adds the
+ * bar is conservative, never too small (tests/test_pi.c holds it to that
+ * over 32 seeds on every run). A cell left without a partner adds the
  * largest variance a 0/4 variable can have (4); the extra points add their
  * own sample variance (4 each when there is only one). `variance` is n times
  * the variance of the estimate (the per-sample figure that gives

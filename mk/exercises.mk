@@ -2,17 +2,20 @@
 #
 #   make exercises             every exercise in every build, ONE table: the
 #                              reader's build (the stub as shipped) must FAIL,
-#                              the reference must PASS, every slip must FAIL;
-#                              exit status 1 otherwise. Prints its total time.
+#                              the reference and every correct alternative
+#                              must PASS, every slip must FAIL, and fail the
+#                              check it names; exit status 1 otherwise.
+#                              Prints, per exercise, its consistent slips and
+#                              alternatives, and its total time.
 #   make exercise NAME=cosine  the reader's build of one exercise: its
 #                              figures, its verdict and its picture (gnuplot)
 #
-# Three builds of each exercise, one compilation each, into
+# The builds of each exercise, one compilation each, into
 # $(B)/exercises/obj/: NAME.o (the reader's file as it is), NAME-ref.o
-# (-DEX_REFERENCE) and NAME-slipK.o (-DSLIP=K). The slips of an exercise
-# are read from its fixture, exercises/fixtures/NAME.h (one
-# "#elif SLIP == K" or "#if SLIP == K" per slip), so adding a slip is
-# editing that file only.
+# (-DEX_REFERENCE), NAME-slipK.o (-DSLIP=K) and NAME-altK.o (-DALT=K). The
+# slips and alternatives of an exercise are read from its fixture,
+# exercises/fixtures/NAME.h (one "#elif SLIP == K" or "#elif ALT == K"
+# each), so adding one is editing that file only.
 #
 # Linking: the shared judge (check_exercise.o) and the archives it and the
 # references use (the layers below render/, whole, highest first) are
@@ -33,7 +36,10 @@ EX_LAYERS := $(filter-out render,$(LAYERS))
 EX_NOLTO := $(if $(filter -flto%,$(MODE)),-flinker-output=nolto-rel)
 ex_slips = $(shell sed -n 's/^\#\(el\)*if SLIP == \([0-9][0-9]*\).*/\2/p' \
              exercises/fixtures/$(1).h 2>/dev/null)
-ex_builds = $(1) $(1)-ref $(foreach k,$(call ex_slips,$(1)),$(1)-slip$(k))
+ex_alts = $(shell sed -n 's/^\#\(el\)*if ALT == \([0-9][0-9]*\).*/\2/p' \
+             exercises/fixtures/$(1).h 2>/dev/null)
+ex_builds = $(1) $(1)-ref $(foreach k,$(call ex_slips,$(1)),$(1)-slip$(k)) \
+            $(foreach k,$(call ex_alts,$(1)),$(1)-alt$(k))
 EX_ALL := $(patsubst %,$(EX_DIR)/%-all,$(EXERCISES))
 # Jobs of the build when the caller gave no -j: the machine's cores.
 EX_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -60,6 +66,8 @@ define ex_programs
 $(call ex_object,$(1),$(1),)
 $(call ex_object,$(1)-ref,$(1),-DEX_REFERENCE -Dex_this=ex_build_ref)
 $(foreach k,$(call ex_slips,$(1)),$(call ex_object,$(1)-slip$(k),$(1),-DSLIP=$(k) -Dex_this=ex_build_slip$(k))
+)
+$(foreach k,$(call ex_alts,$(1)),$(call ex_object,$(1)-alt$(k),$(1),-DALT=$(k) -Dex_this=ex_build_alt$(k))
 )
 $(EX_DIR)/$(1): $(EX_DIR)/obj/$(1).o $(EX_JUDGE)
 	$$(quiet) "  LD      $$@"

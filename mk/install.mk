@@ -53,6 +53,17 @@ SO_LIBS := -lgsl -lgslcblas -lm
 # outside the linker's path, where only clang's own -fopenmp finds it.
 OMP_LIBS := $(if $(cc_is_gcc),-lgomp,-fopenmp)
 
+# mcbox.pc finds the install from where it lies: prefix is ${pcfiledir}
+# and the way up from PKGCONFIGDIR to PREFIX ("../.." for lib/pkgconfig),
+# so that a staged install (DESTDIR) or a moved tree answers with its own
+# headers and library through PKG_CONFIG_PATH alone. A PKGCONFIGDIR outside
+# PREFIX cannot say where PREFIX is: then prefix is written as it is.
+pc_empty :=
+pc_space := $(pc_empty) $(pc_empty)
+PC_REL := $(patsubst $(PREFIX)/%,%,$(PKGCONFIGDIR))
+PC_UP := $(subst $(pc_space),/,$(foreach d,$(subst /, ,$(PC_REL)),..))
+PC_PREFIX = $(if $(filter $(PKGCONFIGDIR),$(PC_REL)),$(PREFIX),$${pcfiledir}/$(PC_UP))
+
 MAN_PAGES := mcbox mcbox-check mcbox-warp
 MAN_OUT := $(patsubst %,$(B)/man/man1/%.1,$(MAN_PAGES))
 
@@ -112,7 +123,7 @@ _install: $(INSTALL_BUILT)
 	ln -sf $(SO_NAME) '$(DESTDIR)$(LIBDIR)/libmcbox.so'
 	$(INSTALL_DATA) check/check.h '$(DESTDIR)$(INCLUDEDIR)/mcbox/check.h'
 	$(INSTALL_DATA) $(MAN_OUT) '$(DESTDIR)$(MANDIR)/man1/'
-	sed -e '/^##/d' -e 's|@PREFIX@|$(PREFIX)|' \
+	sed -e '/^##/d' -e 's|@PREFIX@|$(PC_PREFIX)|' \
 	    -e 's|@LIBDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))|' \
 	    -e 's|@INCLUDEDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))|' \
 	    -e 's|@VERSION@|$(MCBOX_VERSION)|' -e 's|@OMP_LIBS@|$(OMP_LIBS)|' mk/mcbox.pc.in > '$(DESTDIR)$(PKGCONFIGDIR)/mcbox.pc'

@@ -48,6 +48,14 @@ $(B)/bin/%: $(B)/obj/examples/%.o $(APP_LIB) $(LIBFILES)
 	$(quiet) "  LD      $@"
 	$(Q)$(CC) $(ALL_LDFLAGS) $< $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
 
+# mcbox-check is split by door (examples/check_cli/: options, the child
+# process, --exec, --samples, reports, plot); its parts link with it alone.
+CHECK_CLI_OBJS := $(patsubst %.c,$(B)/obj/%.o,$(wildcard examples/check_cli/*.c))
+$(B)/bin/mcbox-check: $(B)/obj/examples/mcbox-check.o $(CHECK_CLI_OBJS) $(APP_LIB) $(LIBFILES)
+	@mkdir -p $(@D)
+	$(quiet) "  LD      $@"
+	$(Q)$(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(APP_LIB) $(LINK_LAYERS) $(LIBS) -o $@
+
 $(B)/bench/%: $(B)/obj/bench/%.o $(APP_LIB) $(LIBFILES)
 	@mkdir -p $(@D)
 	$(quiet) "  LD      $@"

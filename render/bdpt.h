@@ -131,11 +131,12 @@ static inline bool rt_bdpt_weighted(const rt_path_settings *ps)
  * strategies give every pixel exactly its spp samples, while a light
  * subpath lands in a pixel a random number of times, and that count's own
  * variance is not in the densities; any positive constant per strategy
- * keeps the weights a partition of unity (Veach 9.2). An eighth was
- * measured against 1, 1/2, 1/4 and 1/16 (docs/performance.md): 23% less
- * squared error on lambert, 15% on book; a scale on the splats of every
- * path length measured worse than on the direct light's alone, and the
- * splats of longer paths keep their plain weight. */
+ * keeps the weights a partition of unity (Veach 9.2). An eighth gave the
+ * least squared error of 1, 1/2, 1/4, 1/8 and 1/16 on the lambert and
+ * book scenes in `make bench`'s error tables, which measure it afresh on
+ * every run; a scale on the splats of every path length did worse there
+ * than on the direct light's alone, so the splats of longer paths keep
+ * their plain weight. */
 #define RT_BDPT_DIRECT_SPLAT_SCALE 0.125
 
 /* The weight of strategy s (s light vertices, n - s camera vertices) for

@@ -90,11 +90,17 @@ static mcbox_check_options suite_options(uint64_t n, uint64_t seed)
 }
 
 /* Every case of every catalog row: the C API passes it, and its statistic,
- * degrees of freedom and p-value are the harness's to the bit. */
+ * degrees of freedom and p-value are the harness's to the bit, except
+ * where the check's own refinement of a cell disagreed with the harness's
+ * GSL value beyond its error estimate (the mixtures' cells that the
+ * light's edge cuts): there the check keeps the refinement's value and
+ * adds the difference to its error, and the statistic may differ from the
+ * harness's by a relative 1e-4 at most (those cells hold under one
+ * expected sample each). */
 static void test_catalog_through_api(void **state)
 {
     (void)state;
-    int cases = 0, failures = 0;
+    int cases = 0, failures = 0, refined = 0;
     for (size_t i = 0; i < cat_count(); i++) {
         const cat_row *row = cat_at(i);
         for (const cat_case *tc = row->cases; tc->name; tc++, cases++) {
@@ -110,19 +116,25 @@ static void test_catalog_through_api(void **state)
             mcbox_sampler m = row_sampler(&s, tc->params);
             mcbox_check_result r;
             assert_int_equal(mcbox_check_run(&m, &o, &r, NULL), 0);
-            bool same = memcmp(&r.statistic, &h.r.stat, sizeof(double)) == 0 &&
+            bool bits = memcmp(&r.statistic, &h.r.stat, sizeof(double)) == 0 &&
                         r.dof == h.r.dof && memcmp(&r.pvalue, &h.r.pvalue, sizeof(double)) == 0;
+            bool near = r.dof == h.r.dof && fabs(r.statistic - h.r.stat) <= 1e-4 * h.r.stat;
+            bool same = bits || near;
+            refined += !bits && near;
             printf("check %-22s stat %12.4f dof %5d p %.4g | harness %12.4f %5d %.4g %s %s%s\n",
                    tc->name, r.statistic, r.dof, r.pvalue, h.r.stat, h.r.dof, h.r.pvalue,
-                   same ? "same" : "DIFFERENT", r.pass ? "pass" : "FAIL ", r.message);
+                   bits ? "same" : near ? "near" : "DIFFERENT", r.pass ? "pass" : "FAIL ", r.message);
             if (!same || !r.pass || h.reject) {
                 failures++;
                 print_error("%s: seed %llu\n", tc->name, (unsigned long long)seed);
             }
         }
     }
-    printf("catalog through the C API: %d cases, %d failures\n", cases, failures);
+    printf("catalog through the C API: %d cases, %d failures, %d within 1e-4 (refined cells)\n",
+           cases, failures, refined);
     assert_int_equal(failures, 0);
+    /* Only the two mixtures' light edges may take the refinement's value. */
+    assert_true(refined <= 2);
 }
 
 /* Every negative control of the catalog is rejected by the C API, each
@@ -593,7 +605,15 @@ static void test_invalid_calls(void **state)
     mcbox_domain_kind k;
     assert_true(mcbox_domain_parse("hemisphere", &k) && k == MCBOX_HEMISPHERE);
     assert_false(mcbox_domain_parse("hemisfear", &k));
-    assert_string_equal(mcbox_version(), "0.1.0");
+    assert_string_equal(mcbox_version(), "0.2.0");
+    o = mcbox_check_defaults();
+    o.quad_depth = 31;
+    assert_int_equal(mcbox_check_run(&m, &o, &r, NULL), -1);
+    assert_non_null(strstr(r.message, "quad_depth"));
+    o = mcbox_check_defaults();
+    o.quad_error_max = 0.0;
+    assert_int_equal(mcbox_check_run(&m, &o, &r, NULL), -1);
+    assert_non_null(strstr(r.message, "quad_error_max"));
 }
 
 int main(void)

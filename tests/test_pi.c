@@ -189,10 +189,9 @@ static void test_pi_stratified_beats_plain(void **state)
 /* The collapsed-strata error bar is honest (never too small): over 32
  * seeds at n = 10^4 + 7, the sum of z^2 stays below the chi-square(32)
  * quantile of upper tail 6.3e-5 (the |z| < 4 rate); a conservative error
- * bar makes it smaller still (measured: z^2 averages 0.44, the bar is 1.5
- * times the true error). Negative control: the bar divided by 5 must fail
- * (sum z^2 x 25; it escapes only if the honest sum falls below 2.9, for
- * 0.44 chi2(32) a chance of about 1e-6). */
+ * bar makes it smaller still. Negative control: the bar divided by 5 must
+ * fail (sum z^2 x 25), which it does unless the honest sum falls below
+ * 2.9, the quantile over 25; the test asserts both on every run. */
 static void test_pi_stratified_error_bar_honest(void **state)
 {
     negctl *t = *state;

@@ -8,8 +8,8 @@
 # gsl.pc), the dispatcher, the man pages, and the outside project
 # (outside/, copied out of the tree) built and run against the stage only.
 # Then that no installed file names the staging directory, that a second
-# install with another PREFIX compiles nothing and differs only in
-# mcbox.pc, and that uninstall leaves no mcbox file behind. Ends with
+# install with another PREFIX compiles nothing and installs the same files
+# (mcbox.pc is relocatable), and that uninstall leaves no mcbox file behind. Ends with
 # "N passed, N failed"; exits 1 when a check failed.
 #
 # Environment: B (the build directory), MAKE, CC (the compiler of the build).
@@ -100,12 +100,32 @@ check "global symbols of libmcbox.a = the header's functions" \
     diff <(header_functions) <(static_globals "$lib/libmcbox.a")
 
 # --- pkg-config, and a program linked with its flags alone ---------------------
-export PKG_CONFIG_SYSROOT_DIR=$stage PKG_CONFIG_LIBDIR=$lib/pkgconfig
+# mcbox.pc is relocatable (prefix=${pcfiledir}/../..): PKG_CONFIG_PATH alone
+# finds the stage's header and library, no PKG_CONFIG_SYSROOT_DIR. Its paths
+# go through the pkgconfig directory; normalized, they are the stage's.
+# PKG_CONFIG_LIBDIR keeps the system's own directories out of the answers.
+normalized() { # the flags with every -I and -L path made canonical
+    local out= w
+    for w in $1; do
+        case $w in
+        -I* | -L*) out="$out ${w:0:2}$(realpath -m "${w:2}")" ;;
+        *) out="$out $w" ;;
+        esac
+    done
+    echo "${out# }"
+}
+export PKG_CONFIG_LIBDIR=$lib/pkgconfig
 check "pkg-config --modversion mcbox = $version" same "$(pkg-config --modversion mcbox)" "$version"
-check "pkg-config --cflags mcbox" same "$(pkg-config --cflags mcbox)" "-I$stage/usr/include"
-check "pkg-config --libs mcbox" same "$(pkg-config --libs mcbox)" "-L$lib -lmcbox"
-check "pkg-config --libs --static mcbox" same "$(pkg-config --libs --static mcbox)" \
+check "pkg-config --cflags mcbox" same "$(normalized "$(pkg-config --cflags mcbox)")" "-I$stage/usr/include"
+check "pkg-config --libs mcbox" same "$(normalized "$(pkg-config --libs mcbox)")" "-L$lib -lmcbox"
+check "pkg-config --libs --static mcbox" same "$(normalized "$(pkg-config --libs --static mcbox)")" \
     "-L$lib -lmcbox -lgsl -lgslcblas $omp_flag -lm"
+check "PKG_CONFIG_PATH alone (no SYSROOT, no LIBDIR) finds the stage" \
+    bash -c "out=\$(env -u PKG_CONFIG_LIBDIR -u PKG_CONFIG_SYSROOT_DIR PKG_CONFIG_PATH='$lib/pkgconfig' \
+                 pkg-config --cflags --libs mcbox) &&
+             [ \"\$(realpath -m \"\$(env -u PKG_CONFIG_LIBDIR PKG_CONFIG_PATH='$lib/pkgconfig' \
+                 pkg-config --variable=includedir mcbox)\")\" = '$stage/usr/include' ] &&
+             grep -q -- '-lmcbox' <<<\"\$out\""
 cflags=$(pkg-config --cflags mcbox) libs=$(pkg-config --libs mcbox)
 static_libs=$(pkg-config --libs --static mcbox)
 
@@ -212,7 +232,7 @@ else
 fi
 check "ldd my_warp: libmcbox.so.$major from the stage" \
     bash -c "ldd '$project/my_warp' | grep -q 'libmcbox.so.$major => $lib/libmcbox.so.$major '"
-unset PKG_CONFIG_SYSROOT_DIR PKG_CONFIG_LIBDIR LD_LIBRARY_PATH
+unset PKG_CONFIG_LIBDIR LD_LIBRARY_PATH
 
 # --- nothing names the stage; another PREFIX compiles nothing -----------------
 check "no staged file contains the DESTDIR path" bash -c "! grep -rlF '$stage' '$stage'"
@@ -227,12 +247,12 @@ rebuilt=$(find "$bdir/obj-pic" "$bdir/lib-pic" "$bdir/man" "$bdir/bin" "$bdir/ob
 check "the second install compiled nothing (no object, library, page or program newer)" \
     test -z "$rebuilt"
 [ -z "$rebuilt" ] || echo "      rebuilt: $rebuilt"
-check "the two installs differ only in mcbox.pc" \
-    diff -r -x mcbox.pc "$stage/usr" "$stage2/opt/mcbox"
-check "PREFIX=/opt/mcbox: pkg-config --variable=libdir, --cflags" \
+check "the two installs are the same files (mcbox.pc relocatable)" \
+    diff -r "$stage/usr" "$stage2/opt/mcbox"
+check "PREFIX=/opt/mcbox: pkg-config --variable=libdir, --cflags name that stage" \
     bash -c "export PKG_CONFIG_LIBDIR='$stage2/opt/mcbox/lib/pkgconfig';
-             [ \"\$(pkg-config --variable=libdir mcbox)\" = /opt/mcbox/lib ] &&
-             [ \"\$(pkg-config --cflags mcbox | sed 's/ *\$//')\" = -I/opt/mcbox/include ]"
+             [ \"\$(realpath -m \"\$(pkg-config --variable=libdir mcbox)\")\" = '$stage2/opt/mcbox/lib' ] &&
+             [ \"\$(pkg-config --cflags mcbox | sed 's/ *\$//')\" = '-I$stage2/opt/mcbox/lib/pkgconfig/../../include' ]"
 
 # --- uninstall ---------------------------------------------------------------
 check "make uninstall DESTDIR=... PREFIX=/usr" \

@@ -16,6 +16,8 @@ passed=0 failed=0
 
 build_fixture() { # $1 = chapter, $2 = source root; output in $tmp/out, $tmp/err
     rm -rf "$tmp/state" && mkdir -p "$tmp/state/runs" "$tmp/state/cwd"
+    # One anchor of a numbered chapter, for the links of wrong-chapter.
+    echo "ch-pi 01-pi.html" >"$tmp/state/anchors"
     BOOK_BUILD=$B BOOK_OUT=$tmp/book BOOK_STATE=$tmp/state BOOK_RUNS=$tmp/state/cwd BOOK_SRC=$2 \
         pandoc --fail-if-warnings --lua-filter ../mcbox.lua -f markdown -t html5 \
         -o "$tmp/out" "$1" 2>"$tmp/err"

@@ -330,3 +330,34 @@ const char *app_option_value(const char *prog, int argc, char **argv, int *i, si
         app_fail(prog, "%s needs a value", argv[*i]);
     return argv[++*i];
 }
+
+int app_split_assignments(const char *value, char *storage, size_t size, const char **out, int max,
+                          char *err, size_t errlen)
+{
+    int n = 0;
+    size_t used = 0;
+    for (const char *p = value;;) {
+        while (*p == ' ' || *p == '\t')
+            p++;
+        if (!*p)
+            break;
+        size_t len = strcspn(p, " \t");
+        const char *eq = memchr(p, '=', len);
+        if (!eq || eq == p || eq == p + len - 1) {
+            snprintf(err, errlen, "'%.*s' is not key=value", (int)(len < 100 ? len : 100), p);
+            return -1;
+        }
+        if (n == max || used + len + 1 > size) {
+            snprintf(err, errlen, "more than %d assignments, or longer than %zu bytes", max, size);
+            return -1;
+        }
+        memcpy(storage + used, p, len);
+        storage[used + len] = '\0';
+        out[n++] = storage + used;
+        used += len + 1;
+        p += len;
+    }
+    if (n == 0)
+        snprintf(err, errlen, "no key=value assignment");
+    return n ? n : -1;
+}

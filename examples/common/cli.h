@@ -90,6 +90,15 @@ bool app_parse_seed(const char *s, uint64_t *out);
  * or the OpenMP thread limit when lower. */
 int app_max_threads(void);
 
+/* Splits one --param value into its "key=value" assignments: blanks
+ * separate them (commas belong to vectors, "axis=0,0,1 cos_max=0.9"), as
+ * `warp list` prints a row's parameters. Each is copied into storage (size
+ * bytes, NUL-separated) and pointed to from out[0 ..), at most max. Returns
+ * the count (>= 1), or -1 with the reason in err: no assignment, a word
+ * without a key or a value, too many, or storage too small. */
+int app_split_assignments(const char *value, char *storage, size_t size, const char **out, int max,
+                          char *err, size_t errlen);
+
 /* Parses a finite double with nothing after it. */
 bool app_parse_double(const char *s, double *out);
 

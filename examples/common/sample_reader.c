@@ -178,6 +178,24 @@ static int text_line(const char *p, size_t len, int dims, bool may_be_header, do
     return 0;
 }
 
+/* Raw records read as text give fields of garbage and a message about the
+ * first one; a control byte (NUL above all: a float of 0 or 1 has two or
+ * more) in the first 4 KiB says "binary" at once, and what to pass. Text
+ * has none but blanks and line ends. */
+static bool looks_binary(const char *buf, size_t len, char *err, size_t errlen)
+{
+    size_t head = len < 4096 ? len : 4096;
+    for (size_t i = 0; i < head; i++) {
+        unsigned char b = (unsigned char)buf[i];
+        if ((b < 0x20 && !is_blank((char)b) && b != '\n') || b == 0x7f) {
+            snprintf(err, errlen, "looks binary (byte %zu is 0x%02X, not text): pass --format f32 "
+                                  "or f64 for raw records", i, b);
+            return true;
+        }
+    }
+    return false;
+}
+
 static bool parse_text(const char *buf, size_t len, int dims, grow *g, char *err, size_t errlen)
 {
     size_t at = 0;
@@ -187,6 +205,8 @@ static bool parse_text(const char *buf, size_t len, int dims, grow *g, char *err
                               "as UTF-8 or ASCII", (unsigned char)buf[0], (unsigned char)buf[1]);
         return false;
     }
+    if (looks_binary(buf, len, err, errlen))
+        return false;
     if (len >= 3 && (unsigned char)buf[0] == 0xef && (unsigned char)buf[1] == 0xbb &&
         (unsigned char)buf[2] == 0xbf)
         at = 3;

@@ -14,7 +14,9 @@
  * non-blank character is '#' are skipped; so is the first other line when
  * none of its fields is a number (a header such as "x,y,z"). CRLF line
  * ends are accepted, a UTF-8 byte-order mark at the start is skipped, a
- * UTF-16 one is refused. Only points: a pdf or weight column is an error.
+ * UTF-16 one is refused, and so is a control byte other than blanks and
+ * line ends in the first 4 KiB ("looks binary": raw records read as
+ * text). Only points: a pdf or weight column is an error.
  * Raw: records of `dims` little-endian IEEE-754 float32 or float64 values,
  * nothing else (no header).
  *
@@ -50,7 +52,8 @@ bool app_samples_format_parse(const char *name, app_samples_format *f);
  * failure returns false, sets *points to NULL and writes one line (no
  * newline) to err: "line L: ..." for text, "sample K (byte B): ..." for
  * raw records (lines and samples counted from 1, byte offsets from 0), or
- * what is wrong with the whole buffer ("no samples ...", "out of memory"). */
+ * what is wrong with the whole buffer ("no samples ...", "looks binary
+ * ...", "out of memory"). */
 bool app_samples_parse(const char *buf, size_t len, app_samples_format fmt, int dims,
                        double **points, uint64_t *n, char *err, size_t errlen);
 

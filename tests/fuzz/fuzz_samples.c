@@ -6,7 +6,8 @@
  * number of coordinates (1 to 3); the rest is the file. The reader must
  * return, without reading past the buffer (AddressSanitizer watches),
  * either an error message or points that are all finite, with their count
- * consistent with the input's size. Built and run by `make fuzz`.
+ * consistent with the input's size, and text accepted only without control
+ * bytes in its first 4 KiB (the reader's "looks binary" rule). Built and run by `make fuzz`.
  */
 #include <math.h>
 #include <stddef.h>
@@ -44,6 +45,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (uint64_t i = 0; i < n * (uint64_t)dims; i++)
             if (!isfinite(pts[i]))
                 abort();
+        /* Text read without complaint has no control byte but blanks and
+         * line ends in its first 4 KiB: raw records are called binary. */
+        for (size_t i = 0; fmt == APP_SAMPLES_TEXT && i < len && i < 4096; i++) {
+            unsigned char b = (unsigned char)buf[i];
+            if (b == 0 || (b < 0x20 && !strchr(" \t\r\v\f\n", b)) || b == 0x7f)
+                abort();
+        }
     } else if (pts != NULL || err[0] == '\0' || memchr(err, '\n', strlen(err))) {
         abort(); /* a failure is one line of message and no points */
     }
