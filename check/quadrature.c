@@ -111,6 +111,19 @@ static const double *node_point(size_t at, const void *src)
     return nd->jac[at] != 0.0 ? nd->pts + at * 3 : NULL;
 }
 
+/* The point of chart point p into pt and the chart's Jacobian there; 0
+ * (and pt zeroed) where the chart maps p to no point of the domain. */
+static double chart_node(const mcbox_check *c, const double p[2], double *pt)
+{
+    recorder rec = {pt, false};
+    double jv = 0.0;
+    if (!chk_masked(c, p))
+        jv = cat_chart_density_of(&c->st, p, record_point, &rec);
+    if (!rec.called)
+        memset(pt, 0, 3 * sizeof *pt);
+    return rec.called ? jv : 0.0;
+}
+
 /* The tensor Gauss-Legendre rule of n points per axis on the chart box b
  * (x0, x1, y0, y1): its nodes' points into pts and their weights times
  * the chart's Jacobian into jac (0 where the chart maps a node to no
@@ -128,13 +141,7 @@ static size_t rule_nodes(const mcbox_check *c, const double b[4], int n, double 
         size_t i = dims == 2 ? k / (size_t)n : k, j = dims == 2 ? k % (size_t)n : 0;
         double p[2] = {gx[i], dims == 2 ? gy[j] : 0.0};
         double w = gw[i] * (dims == 2 ? gv[j] : 1.0);
-        recorder rec = {pts + k * 3, false};
-        double jv = 0.0;
-        if (!chk_masked(c, p))
-            jv = cat_chart_density_of(&c->st, p, record_point, &rec);
-        if (!rec.called)
-            memset(pts + k * 3, 0, 3 * sizeof *pts);
-        jac[k] = rec.called ? w * jv : 0.0;
+        jac[k] = w * chart_node(c, p, pts + k * 3);
     }
     return count;
 }
@@ -279,13 +286,7 @@ static size_t probe_nodes(const mcbox_check *c, const double b[4], int q, double
                 double t = which ? t_node : t_probe, s = gy[j];
                 double u = axis == 0 ? t : s, v = axis == 0 ? s : t;
                 double p[2] = {b[0] + u * (b[1] - b[0]), dims == 2 ? b[2] + v * (b[3] - b[2]) : 0.0};
-                recorder rec = {pts + k * 3, false};
-                double jv = 0.0;
-                if (!chk_masked(c, p))
-                    jv = cat_chart_density_of(&c->st, p, record_point, &rec);
-                if (!rec.called)
-                    memset(pts + k * 3, 0, 3 * sizeof *pts);
-                jac[k] = rec.called ? jv : 0.0;
+                jac[k] = chart_node(c, p, pts + k * 3);
             }
     }
     return k;
