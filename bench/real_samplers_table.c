@@ -55,6 +55,17 @@ static opts parse(int argc, char **argv)
     opts o = {{100000, 300000, 1000000}, 3, {true, true, true}, NULL, NULL, 200, 100000, true, true};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            puts("usage: " PROG " [--counts 1e5,3e5,1e6] [--doors c,exec,samples] [--only NAME]\n"
+                 "       [--chart NAME] [--fa-seeds 200] [--fa-n 1e5] [--no-table] [--no-fa]\n"
+                 "The real samplers x charts x doors x sample counts, as a Markdown table of\n"
+                 "verdicts, then the false-alarm runs (p-values of correct samplers over seeds).");
+            exit(0);
+        }
+        if (strcmp(a, "--version") == 0) {
+            printf("%s (mcbox) %s\n", PROG, mcbox_version());
+            exit(0);
+        }
         if (strcmp(a, "--counts") == 0 && v) {
             o.n_counts = 0;
             for (char *p = argv[++i]; *p && o.n_counts < 8;) {
