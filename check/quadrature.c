@@ -4,20 +4,21 @@
  * A density with a jump inside a cell (a light's edge, a cone's rim, a
  * spherical triangle's sides crossing a (cos theta, phi) chart) defeats a
  * rule of fixed order: its error falls only as fast as the area of the
- * cell that the jump cuts. Two answers here:
- * - a pointwise pdf is integrated by GSL's adaptive rule, cell by cell, as
- *   the suite's own harness does (mc/gof.h); where GSL says it missed its
- *   target, its value is not trusted and the cell is integrated again as
- *   below;
- * - a density behind pdf_batch (a pipe, a GPU) gets fixed Gauss-Legendre
- *   rules in batches: every cell the rule of quad_order points per axis
- *   and, as a check, the rule of half that order. A cell whose two rules
- *   disagree is halved along each axis, its parts getting rules of half
- *   the order (a jump gains nothing from a high order; a smaller part
- *   does), and so on, worst parts first, until the estimated error is
- *   below ERR_TARGET, quad_depth halvings are reached or EVAL_BUDGET
- *   densities have been asked for.
- * A part's error estimate is three times the difference of its two rules:
+ * cell that the jump cuts, and two rules of different order can agree on
+ * a wrong value. So every cell, whatever the door, gets fixed
+ * Gauss-Legendre rules in batches: the rule of quad_order points per axis,
+ * as a check the rule of half that order on the cell cut unequally (see
+ * CHECK_CUT), and probes just inside every side (see EDGE_PROBE). A cell
+ * whose rules disagree, or whose density drops to 0 at a side, is halved
+ * along each axis, and so on, worst parts first, until the estimated
+ * error is below ERR_TARGET, quad_depth halvings are reached or
+ * EVAL_BUDGET densities have been asked for (a density behind pdf_batch,
+ * a pipe or a GPU, is asked once per round). A pointwise pdf also gets
+ * GSL's adaptive rule on every cell, as the suite's own harness integrates
+ * it (mc/gof.h); its value stands where the fixed rules call the cell
+ * smooth, and elsewhere only where it agrees with the refinement (see
+ * pointwise_probs).
+ * A part's error estimate starts from three times its two rules' difference:
  * for an error that falls as h^a with the part's width h, the finer rule's
  * error is the difference times 2^-a / (1 - 2^-a), which is 1 for a jump
  * (a = 1) and 2.41 for an inverse square root singularity (a = 1/2, the
