@@ -261,6 +261,18 @@ void cat_use_polygon_chart(cat_state *s, bool triangle, vec3 a, vec3 e1, vec3 e2
     s->poly_corner = a, s->poly_e1 = e1, s->poly_e2 = e2;
 }
 
+/* The edge coordinates (a, b) of the point x of the plane corner + a u +
+ * b v, by least squares in the plane (Cramer's rule on the Gram matrix of
+ * u and v). */
+static void plane_coords(vec3 corner, vec3 u, vec3 v, vec3 x, double out[2])
+{
+    vec3 d = vec3_sub(x, corner);
+    double uu = vec3_dot(u, u), uv = vec3_dot(u, v), vv = vec3_dot(v, v);
+    double du = vec3_dot(d, u), dv = vec3_dot(d, v), det = uu * vv - uv * uv;
+    out[0] = (du * vv - dv * uv) / det;
+    out[1] = (dv * uu - du * uv) / det;
+}
+
 /* The chart point of direction d toward the polygon: where the ray from
  * the origin along d meets the polygon's plane, in the polygon's
  * coordinates; NaN (outside every rectangle) for a ray that misses the
@@ -273,11 +285,9 @@ static void polygon_point(const cat_state *s, vec3 d, double out[2])
     out[0] = out[1] = (double)NAN;
     if (!(t > 0.0) || !isfinite(t))
         return;
-    vec3 q = vec3_sub(vec3_scale(d, t), s->poly_corner);
-    vec3 e1 = s->poly_e1, e2 = s->poly_e2;
-    double uu = vec3_dot(e1, e1), uv = vec3_dot(e1, e2), vv = vec3_dot(e2, e2);
-    double du = vec3_dot(q, e1), dv = vec3_dot(q, e2), det = uu * vv - uv * uv;
-    double a = (du * vv - dv * uv) / det, b = (dv * uu - du * uv) / det;
+    double ab[2];
+    plane_coords(s->poly_corner, s->poly_e1, s->poly_e2, vec3_scale(d, t), ab);
+    double a = ab[0], b = ab[1];
     if (s->poly_triangle) {
         out[0] = a;
         /* At the corner a = 0 every y is the same point. */
@@ -298,18 +308,6 @@ static vec3 polygon_direction(const cat_state *s, const double c[2], double *jac
     double r = vec3_length(p), area = vec3_length(n) * (s->poly_triangle ? c[0] : 1.0);
     *jac = r > 0.0 ? area * fabs(vec3_dot(n, p)) / (vec3_length(n) * r * r * r) : 0.0;
     return r > 0.0 ? vec3_scale(p, 1.0 / r) : p;
-}
-
-/* The edge coordinates (a, b) of the point x of the parallelogram
- * corner + a u + b v, by least squares in its plane (Cramer's rule on the
- * Gram matrix of u and v). */
-static void parallelogram_coords(const cat_values *p, vec3 x, double out[2])
-{
-    vec3 d = vec3_sub(x, p->corner);
-    double uu = vec3_dot(p->u, p->u), uv = vec3_dot(p->u, p->v), vv = vec3_dot(p->v, p->v);
-    double du = vec3_dot(d, p->u), dv = vec3_dot(d, p->v), det = uu * vv - uv * uv;
-    out[0] = (du * vv - dv * uv) / det;
-    out[1] = (dv * uu - du * uv) / det;
 }
 
 /* The lobe chart's upper end: x(theta_max). */
@@ -335,7 +333,7 @@ void cat_chart_point(const cat_state *s, const double x[3], double out[2])
         out[1] = smp_spherical_phi(vec3_make(x[0], x[1], 0.0));
         return;
     case CAT_CHART_PARALLELOGRAM:
-        parallelogram_coords(&s->p, d, out);
+        plane_coords(s->p.corner, s->p.u, s->p.v, d, out);
         return;
     case CAT_CHART_SURFACE: {
         vec3 w = vec3_scale(vec3_sub(d, s->p.center), 1.0 / s->p.radius);

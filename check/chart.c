@@ -182,16 +182,12 @@ bool chk_make_chart(mcbox_check *c, char *err, size_t errlen)
         /* About the domain's own axis the chart ends at the domain's rim;
          * about any other axis it covers the whole sphere, and the
          * density is 0 in the cells outside the domain. */
-        vec3 axis = lobe_axis(c);
         double theta_max = MC_PI;
         if (!rotated && d->kind == MCBOX_HEMISPHERE)
             theta_max = MC_PI_2;
         else if (!rotated && d->kind == MCBOX_CAP)
             theta_max = acos(d->cos_max);
-        if (!rotated && d->kind == MCBOX_HEMISPHERE)
-            cat_use_lobe_chart(&c->st, lw);
-        else
-            cat_use_lobe_chart_about(&c->st, lw, axis, theta_max);
+        cat_use_lobe_chart_about(&c->st, lw, lobe_axis(c), theta_max);
     }
     return true;
 }

@@ -86,11 +86,9 @@ void chk_coords(const mcbox_check *c, const double x[3], char *buf, size_t size)
 typedef struct chk_quad_report {
     double error;         /* the estimate of |sum of cell probabilities - the integral| */
     uint64_t evaluations; /* densities asked for */
-    int deepest;          /* the most halvings of a cell */
-    bool budget_spent;    /* refinement stopped at the evaluation budget */
     int missed_cell;      /* a cell that integrates to 0 though a sample in it has a
                              positive density, after refinement; -1 if none */
-    double missed_x[3], missed_density;
+    double missed_x[3];
 } chk_quad_report;
 
 /* The user's density at n points at(i, src) (NULL: not needed, out[i]

@@ -185,7 +185,6 @@ static bool converged(const part *p)
 }
 
 /* Whether part p holds the hint point h. */
-
 static bool hint_in(const part *p, const double h[2], int dims)
 {
     return !isnan(h[0]) && h[0] >= p->box[0] && h[0] <= p->box[1] &&
@@ -201,9 +200,8 @@ static bool blind(const part *p)
 /* The rules' orders: quad_order and half of it, at every depth, so that
  * a part's nodes lie four times as densely (in 2D) as its parent's and a
  * sliver of the support one of the parent's nodes found is not lost. */
-static void orders(const mcbox_check *c, int depth, int *q, int *h)
+static void orders(const mcbox_check *c, int *q, int *h)
 {
-    (void)depth;
     *q = c->o.quad_order;
     *h = *q / 2 > 0 ? *q / 2 : 1;
 }
@@ -217,6 +215,8 @@ static void orders(const mcbox_check *c, int depth, int *q, int *h)
  * band. */
 #define CHECK_CUT 0.6180339887498949
 
+/* The pieces a box is cut into, for the check rule and for halving: two
+ * in 1D, four in 2D. */
 static int sub_boxes(const mcbox_check *c)
 {
     return c->spec.dims == 2 ? 4 : 2;
@@ -253,10 +253,11 @@ static size_t probes_of(const mcbox_check *c, int q)
     return c->spec.dims == 2 ? (size_t)(8 * q) : 4u;
 }
 
-static size_t nodes_of(const mcbox_check *c, int depth)
+/* The densities one part asks for: its two rules and its probes. */
+static size_t nodes_of(const mcbox_check *c)
 {
     int q, h;
-    orders(c, depth, &q, &h);
+    orders(c, &q, &h);
     size_t nq = c->spec.dims == 2 ? (size_t)(q * q) : (size_t)q;
     size_t nh = c->spec.dims == 2 ? (size_t)(h * h) : (size_t)h;
     return nq + (size_t)sub_boxes(c) * nh + probes_of(c, q);
@@ -325,9 +326,7 @@ static double edge_error(const double *jac, const double *vals, size_t from, int
  * memory or when a rule could not be made. */
 static int eval_parts(const mcbox_check *c, part *parts, size_t m, uint64_t *evals)
 {
-    size_t total = 0;
-    for (size_t k = 0; k < m; k++)
-        total += nodes_of(c, parts[k].depth);
+    size_t total = m * nodes_of(c);
     double *pts = malloc((total ? total : 1) * 3 * sizeof *pts);
     double *jac = malloc((total ? total : 1) * sizeof *jac);
     double *vals = calloc(total ? total : 1, sizeof *vals);
@@ -335,7 +334,7 @@ static int eval_parts(const mcbox_check *c, part *parts, size_t m, uint64_t *eva
     size_t at = 0;
     for (size_t k = 0; status == 0 && k < m; k++) {
         int q, h;
-        orders(c, parts[k].depth, &q, &h);
+        orders(c, &q, &h);
         size_t nq = rule_nodes(c, parts[k].box, q, pts + at * 3, jac + at);
         status = nq ? 0 : -1;
         at += nq;
@@ -355,7 +354,7 @@ static int eval_parts(const mcbox_check *c, part *parts, size_t m, uint64_t *eva
         status = chk_densities(c, total, node_point, &nd, vals);
     for (size_t k = 0, a = 0; status == 0 && k < m; k++) {
         int q, h;
-        orders(c, parts[k].depth, &q, &h);
+        orders(c, &q, &h);
         size_t nq = c->spec.dims == 2 ? (size_t)(q * q) : (size_t)q;
         size_t nh = (size_t)sub_boxes(c) * (c->spec.dims == 2 ? (size_t)(h * h) : (size_t)h);
         parts[k].full = rule_sum(jac, vals, a, nq);
@@ -427,7 +426,7 @@ static int by_error_desc(const void *a, const void *b)
  * holds it. Returns the number of new parts, or 0 when out of memory. */
 static size_t split_part(const mcbox_check *c, part **parts, size_t *m, size_t *cap, size_t i)
 {
-    int dims = c->spec.dims, n = dims == 2 ? 4 : 2;
+    int dims = c->spec.dims, n = sub_boxes(c);
     if (*m + (size_t)n > *cap) {
         size_t nc = 2 * *cap + (size_t)n;
         part *g = realloc(*parts, nc * sizeof *g);
@@ -474,14 +473,12 @@ static size_t choose(const mcbox_check *c, part *parts, size_t m, part **pick, d
         np = k;
     }
     /* Within the budget: each pick costs its children's nodes. */
-    uint64_t cost = 0;
+    uint64_t cost = 0, each = (uint64_t)sub_boxes(c) * nodes_of(c);
     size_t k = 0;
     for (; k < np; k++) {
-        int d = pick[k]->depth + 1;
-        uint64_t cc = (uint64_t)(c->spec.dims == 2 ? 4 : 2) * nodes_of(c, d);
-        if (cost + cc > room && k >= forced)
+        if (cost + each > room && k >= forced)
             break;
-        cost += cc;
+        cost += each;
     }
     return k;
 }
@@ -531,10 +528,8 @@ static int refine(mcbox_check *c, part **pp, size_t m, double *prob, double *err
         uint64_t used = rep->evaluations - start;
         uint64_t room = used < EVAL_BUDGET ? EVAL_BUDGET - used : 0;
         size_t np = choose(c, parts, n, pick, total, room);
-        if (np == 0) {
-            rep->budget_spent = total > ERR_TARGET && room < EVAL_BUDGET / 64;
+        if (np == 0)
             break;
-        }
         /* Indices, not pointers: splitting may move the array. */
         size_t *at = malloc(np * sizeof *at);
         if (!at) {
@@ -543,7 +538,7 @@ static int refine(mcbox_check *c, part **pp, size_t m, double *prob, double *err
         }
         for (size_t k = 0; k < np; k++)
             at[k] = (size_t)(pick[k] - parts);
-        size_t from = n, kids = c->spec.dims == 2 ? 4 : 2;
+        size_t from = n, kids = (size_t)sub_boxes(c);
         double *parent = malloc(np * sizeof *parent);
         if (!parent)
             status = -1;
@@ -575,8 +570,6 @@ static int refine(mcbox_check *c, part **pp, size_t m, double *prob, double *err
             continue;
         prob[p->cell] += p->full;
         err[p->cell] += part_error(p);
-        if (p->depth > rep->deepest)
-            rep->deepest = p->depth;
         if (blind(p) && rep->missed_cell < 0) {
             rep->missed_cell = p->cell;
             double x[3] = {0.0, 0.0, 0.0};

@@ -156,7 +156,7 @@ static void power(mcbox_check *c, const chk_quad_report *q)
  * points that are not points, points outside, a density that is not one,
  * what the quadrature could not settle, then the statistics. */
 static void decide(mcbox_check *c, const double *expct, size_t cells, bool finite_exp,
-                   const chk_quad_report *q, bool resolved, const char *why)
+                   const chk_quad_report *q, bool resolved)
 {
     mcbox_check_result *r = &c->r;
     char where[160], pt[120];
@@ -245,7 +245,6 @@ static void decide(mcbox_check *c, const double *expct, size_t cells, bool finit
         r->pass = true;
         r->message[0] = '\0';
     }
-    (void)why;
 }
 
 void chk_verdict(mcbox_check *c, const double *expct, size_t cells, bool finite_exp,
@@ -256,5 +255,5 @@ void chk_verdict(mcbox_check *c, const double *expct, size_t cells, bool finite_
     if (!resolved)
         resolution_warning(c, why);
     power(c, q);
-    decide(c, expct, cells, finite_exp, q, resolved, why);
+    decide(c, expct, cells, finite_exp, q, resolved);
 }
