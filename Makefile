@@ -16,11 +16,11 @@ include mk/mpi.mk
 # fonts-texgyre-math: the book ships its math font (TeX Gyre Pagella Math),
 # so that formulas look the same on every reader's machine.
 DEB_PACKAGES := build-essential pkg-config libcmocka-dev libgsl-dev gnuplot-nox pandoc libpng-dev \
-                fonts-texgyre-math
+                libopenexr-dev fonts-texgyre-math
 
 # Link order, highest layer first. The sampler catalog sits above pdf/
 # and below the programs; it does not use render/.
-LAYERS := check catalog render pdf samplers mc
+LAYERS := conform imageio check catalog render pdf samplers mc
 # A layer's archive holds its folder's sources and those of its fast/
 # subfolder (render/fast/: the renderer's vector fast path).
 lib_srcs = $(wildcard $(1)/*.c $(1)/fast/*.c)
@@ -62,6 +62,8 @@ help:
 	@echo "make exercises every reader's exercise: stubs and slips must fail, references pass"
 	@echo "make exercise NAME=cosine  judge your answer to one exercise (exercises/README.md)"
 	@echo "make real-table  the check's verdicts on samplers from the papers, every door, and its false-alarm rate"
+	@echo "make scenes    every conformance scene as pbrt-v4, Mitsuba 3, Blender and table files in build/scenes/"
+	@echo "make conform-table  the renderer against the conformance scenes: false alarms and power of the image check"
 
 deps:
 	@sh tools/deps.sh $(DEB_PACKAGES)
@@ -120,3 +122,4 @@ include mk/fuzz.mk
 include mk/exercises.mk
 include mk/lab.mk
 include mk/real.mk
+include mk/scenes.mk

@@ -117,4 +117,65 @@ void chk_set_message(mcbox_check_result *r, const char *fmt, ...)
 #endif
     ;
 
+
+/* --- rules.c: the fixed rules on boxes of the chart --------------------------- */
+
+/* The check rule runs on the box cut in two (1D) or four (2D) unequal
+ * pieces, at this fraction of each side. Two rules symmetric about the
+ * box's centre both give exactly half the box's mass for any jump lying
+ * between their middle nodes, a band a fifth of the cell wide, and so
+ * would agree on a wrong value; so would the same rule on equal halves
+ * for a jump between their inner nodes. An irrational cut leaves no such
+ * band. */
+#define CHECK_CUT 0.6180339887498949
+
+/* The quadrature nodes' points; where the chart maps a node to no point
+ * (its Jacobian is 0) no density is needed. */
+typedef struct chk_nodes {
+    const double *pts, *jac;
+} chk_nodes;
+
+/* chk_point_at over a chk_nodes: node at's point, NULL where its Jacobian is 0. */
+const double *chk_node_point(size_t at, const void *src);
+/* The point of chart point p into pt and the chart's Jacobian there; 0
+ * (and pt zeroed) where the chart maps p to no point of the domain. */
+double chk_chart_node(const mcbox_check *c, const double p[2], double *pt);
+/* The tensor Gauss-Legendre rule of n points per axis on the chart box b
+ * (x0, x1, y0, y1): points into pts, weights times the Jacobian into jac;
+ * returns the nodes written, or 0. */
+size_t chk_rule_nodes(const mcbox_check *c, const double b[4], int n, double *pts, double *jac);
+/* The rule's sum over nodes [from, from + count); NaN at a negative or
+ * non-finite density. */
+double chk_rule_sum(const double *jac, const double *vals, size_t from, size_t count);
+/* The rules' orders: quad_order and half of it. */
+void chk_orders(const mcbox_check *c, int *q, int *h);
+/* The pieces a box is cut into: two in 1D, four in 2D; piece k of box b
+ * cut at the fraction `cut` of each side. */
+int chk_sub_boxes(const mcbox_check *c);
+void chk_sub_box(const double b[4], int dims, int k, double cut, double out[4]);
+/* The probes per part for a rule of q points, and every density one part
+ * asks for (its two rules and its probes). */
+size_t chk_probes_of(const mcbox_check *c, int q);
+size_t chk_nodes_of(const mcbox_check *c);
+/* The probe pairs of box b (a point just inside each side, then the
+ * rule's outermost node on the same line); returns the points written. */
+size_t chk_probe_nodes(const mcbox_check *c, const double b[4], int q, double *pts, double *jac);
+/* The error bound of the sides whose probes show the support's edge. */
+double chk_edge_error(const double *jac, const double *vals, size_t from, int dims, int q,
+                      const double box[4]);
+
+
+/* --- check.c, shared with run.c -------------------------------------------- */
+
+/* The stream handed to sample_stream: PCG32, the generator of the
+ * uniforms. */
+struct mcbox_stream {
+    mc_rng rng;
+};
+
+/* A result with every figure unset (NaN or 0) and no verdict. */
+void chk_fresh_result(mcbox_check_result *r);
+/* Whether the options are in range; else the reason in err. */
+bool chk_options_valid(const mcbox_check_options *o, char *err, size_t errlen);
+
 #endif /* CHK_INTERNAL_H */

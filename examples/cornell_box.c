@@ -40,6 +40,8 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "conform/build.h"
+#include "conform/conform.h"
 #include "examples/common/cli.h"
 #include "examples/common/mpi_split.h"
 #include "examples/common/outfile.h"
@@ -68,13 +70,30 @@ typedef struct options {
     bool csv, roulette;
 } options;
 
+/* The renderer's own scenes, then the conformance scenes
+ * (conform/conform.h), in one NULL-terminated table for --scene. */
+#define N_SCENE_CHOICES 16
+static void scene_choices(const char *out[N_SCENE_CHOICES + 1])
+{
+    int n = 0;
+    for (int i = 0; rt_scene_names[i] && n < N_SCENE_CHOICES; i++)
+        out[n++] = rt_scene_names[i];
+    for (int i = 0; cf_scene_names[i] && n < N_SCENE_CHOICES; i++)
+        out[n++] = cf_scene_names[i];
+    out[n] = NULL;
+}
+
 static options parse(int argc, char **argv)
 {
+    const char *scenes[N_SCENE_CHOICES + 1];
+    scene_choices(scenes);
     options o = {.scene = "book", .strategy = "mixture", .sampler = "stratified", .gamma = "2",
                  .out = "cornell.png", .reference = NULL, .width = 600, .depth = 50, .threads = 0,
                  .spp = 100, .seed = 1, .csv = false, .roulette = false};
     const app_opt opts[] = {
-        {"--scene", APP_CHOICE, &o.scene, "the scene (default book)", rt_scene_names, 0, 0},
+        {"--scene", APP_CHOICE, &o.scene,
+         "the scene (default book); after lambert, furnace and sphere-light come the conformance scenes of mcbox-scene(1), "
+         "whose every pixel is known", scenes, 0, 0},
         {"--width", APP_INT, &o.width, "image width and height in pixels (default 600)", NULL, 1, 65536},
         {"--spp", APP_COUNT, &o.spp, "samples per pixel (default 100)", NULL, 0, 0},
         {"--samples", APP_COUNT, &o.spp, "same as --spp", NULL, 0, 0},
@@ -304,7 +323,15 @@ int main(int argc, char **argv)
     if (mpi.rank == 0)
         app_outfile_abort(&out);
     rt_camera_params cp;
-    rt_scene *scene = rt_scene_named(o.scene, &cp);
+    const cf_scene *conformance = cf_scene_find(o.scene);
+    rt_scene *scene = conformance ? cf_build(conformance, &cp) : rt_scene_named(o.scene, &cp);
+    if (scene && strategy_splats(&o) && rt_scene_emitter_count(scene) == 0) {
+        rt_scene_destroy(scene);
+        rt_image_destroy(ref);
+        app_outfile_abort(&out);
+        app_fail(prog, "--strategy %s starts light paths on emitters, and scene %s has none "
+                       "(its light is the sky)", o.strategy, o.scene);
+    }
     rt_image *img = rt_image_create(o.width, o.width);
     if (!scene || !img) {
         rt_image_destroy(img);

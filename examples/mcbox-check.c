@@ -91,6 +91,29 @@ static const char USAGE[] =
     "                     expected counts, and (observed - expected) / sqrt(expected)\n"
     "  --help, --version\n" APP_NUMBER_GRAMMAR "\n";
 
+static const char USAGE_IMAGES[] =
+    "\nusage: mcbox-check --image FILE --image FILE... --scene NAME|--truth FILE [options]\n"
+    "Tests a renderer's images against the truth, block by block and per channel, at a\n"
+    "stated family-wise false-alarm rate (mcbox/image.h; man mcbox-check, IMAGES):\n"
+    "  --image FILE       one render (PFM, EXR, PNG, PPM); 2 or more, from different seeds:\n"
+    "                     the noise is measured from them\n"
+    "  --image-mean FILE --image-second FILE --spp N\n"
+    "                     instead: one render's per-pixel mean and mean of squares over N\n"
+    "                     samples (pixels taken as independent)\n"
+    "  --scene NAME       the truth: a conformance scene's closed form (mcbox-scene list)\n"
+    "  --truth FILE       the truth: an exact float image; --truth-error E its error bound\n"
+    "  --reference FILE --reference-noise FILE\n"
+    "                     the truth: a noisy float image and its standard error per pixel;\n"
+    "                     or --reference 2 or more times: independent renders whose mean is\n"
+    "                     the truth and whose spread its noise\n"
+    "  --transfer T       how 8- and 16-bit files were encoded: linear, gamma2 (round(255\n"
+    "                     sqrt x)), gamma2.2, srgb, book (the write_color of Shirley's books)\n"
+    "  --alpha A          family-wise false-alarm rate (default 0.01)\n"
+    "  --block B          block side in pixels (default the larger side / 8)\n"
+    "  --picture FILE     .png or .ppm: each block coloured by its z (red brighter than the\n"
+    "                     truth, blue darker; black frames: rejected)\n"
+    "  --json, --junit FILE, --name NAME   as above\n";
+
 static void open_reports(cli_app *c)
 {
     if (c->a.plot) {
@@ -112,6 +135,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             fputs(USAGE, stdout);
+            fputs(USAGE_IMAGES, stdout);
             return 0;
         }
         if (strcmp(argv[i], "--version") == 0) {
@@ -120,6 +144,9 @@ int main(int argc, char **argv)
         }
     }
     cli_report_prescan(argc, argv);
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--image") == 0 || strcmp(argv[i], "--image-mean") == 0)
+            return cli_image_main(argc, argv);
     c.a = cli_parse(argc, argv);
     cli_report_errors_to(&c);
     signal(SIGPIPE, SIG_IGN); /* a program that dies is an EPIPE, reported */

@@ -33,6 +33,7 @@ typedef struct command {
 static const command COMMANDS[] = {
     {"check", "mcbox-check", "test a sampler (a program, a file of points) against its density"},
     {"warp", "warp", "the sampler catalog: list, sample, pdf, chi2, serve"},
+    {"scene", "mcbox-scene", "the conformance scenes as pbrt, Mitsuba, Blender or table files"},
 };
 #define N_COMMANDS (sizeof COMMANDS / sizeof COMMANDS[0])
 

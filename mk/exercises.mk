@@ -18,8 +18,9 @@
 # each), so adding one is editing that file only.
 #
 # Linking: the shared judge (check_exercise.o) and the archives it and the
-# references use (the layers below render/, whole, highest first) are
-# linked ONCE into the relocatable object judge.o; gcc's LTO runs there
+# references use (the check, the catalog and the layers below render/,
+# whole, highest first) are linked ONCE into the relocatable object
+# judge.o; gcc's LTO runs there
 # (-flinker-output=nolto-rel: the result is plain machine code), and the
 # exercises compile without LTO. The reader's program $(B)/exercises/NAME
 # is NAME.o and judge.o; `make exercises` links all the builds of an
@@ -32,7 +33,7 @@ EXERCISES := pi importance inverse-cdf sphere hemisphere cosine disc cone quad-l
              power-heuristic hammersley lambert
 EX_DIR := $(B)/exercises
 EX_JUDGE := $(EX_DIR)/judge.o
-EX_LAYERS := $(filter-out render,$(LAYERS))
+EX_LAYERS := $(filter-out conform imageio render,$(LAYERS))
 EX_NOLTO := $(if $(filter -flto%,$(MODE)),-flinker-output=nolto-rel)
 ex_slips = $(shell sed -n 's/^\#\(el\)*if SLIP == \([0-9][0-9]*\).*/\2/p' \
              exercises/fixtures/$(1).h 2>/dev/null)

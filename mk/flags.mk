@@ -43,7 +43,7 @@ ALL_CFLAGS = -std=c17 $(WARN) -I. -fopenmp -fno-math-errno $(MODE) -MMD -MP $(CF
 ALL_LDFLAGS = -fopenmp $(MODE) $(LDFLAGS)
 # Debian's library names; no pkg-config at parse time, because `make deps`
 # may be what installs pkg-config.
-LIBS := -lgsl -lgslcblas -lpng -lm
+LIBS := -lgsl -lgslcblas -lpng -lOpenEXRCore-3_1 -lm
 TEST_LIBS := -lcmocka
 
 # Quiet by default: one short line per file ("  CC  mc/rng.c"); V=1 shows

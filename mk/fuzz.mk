@@ -1,6 +1,7 @@
 # mk/fuzz.mk - libFuzzer targets of the parsers that read other people's
-# output: the sample-file reader of `mcbox-check --samples` and the --exec
-# protocol's parsers (tests/fuzz/). Built with clang's
+# output: the sample-file reader of `mcbox-check --samples`, the --exec
+# protocol's parsers and the image readers of `mcbox-check --image`
+# (tests/fuzz/). Built with clang's
 # -fsanitize=fuzzer,address,undefined into build/fuzz/, each run for
 # FUZZ_SECONDS (default 60) on a working copy of its seed corpus
 # (tests/fuzz/corpus/NAME), so what the fuzzer adds stays in build/.
@@ -15,9 +16,11 @@ FUZZ_FLAGS := -std=c17 -g -O1 -I. -fsanitize=fuzzer,address,undefined \
 # The clang driver and its libFuzzer runtime (Debian 12: clang-14, whose
 # fuzzer library ships in libclang-rt-14-dev).
 FUZZ_PACKAGES := clang libclang-rt-14-dev
-FUZZERS := samples proto
+FUZZERS := samples proto image
 fuzz_src_samples := tests/fuzz/fuzz_samples.c examples/common/sample_reader.c
 fuzz_src_proto := tests/fuzz/fuzz_proto.c examples/common/exec_proto.c
+fuzz_src_image := tests/fuzz/fuzz_image.c imageio/image_io.c imageio/image_exr.c \
+                  -lpng -lOpenEXRCore-3_1 -lm
 
 .PHONY: fuzz fuzz-deps _fuzz
 fuzz: fuzz-deps
@@ -26,7 +29,8 @@ fuzz-deps:
 	@sh tools/deps.sh --always $(FUZZ_PACKAGES)
 
 $(FUZZ_B)/fuzz_%: tests/fuzz/fuzz_%.c examples/common/sample_reader.c examples/common/sample_reader.h \
-                  examples/common/exec_proto.c examples/common/exec_proto.h check/check.h
+                  examples/common/exec_proto.c examples/common/exec_proto.h check/check.h \
+                  imageio/image_io.c imageio/image_exr.c imageio/image_io.h imageio/internal.h
 	@mkdir -p $(@D)
 	$(quiet) "  FUZZCC  $@"
 	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) $(fuzz_src_$*) -o $@

@@ -1,11 +1,11 @@
 # mk/install.mk - make install / uninstall, and the outside project's check.
 #
 # What a user of mcbox gets: libmcbox (shared, with a soname, and static),
-# the one public header mcbox/check.h, mcbox.pc for pkg-config, the
-# programs mcbox, mcbox-check and mcbox-warp, and their man pages. GNU
-# conventions: every directory derives from PREFIX unless given, and
-# DESTDIR (a staging root for packagers) is prepended when copying only, so
-# no installed file names it. Nothing compiled depends on PREFIX either:
+# the public headers mcbox/check.h and mcbox/image.h, mcbox.pc for pkg-config, the
+# programs mcbox, mcbox-check, mcbox-warp and mcbox-scene, and their man
+# pages. GNU conventions: every directory derives from PREFIX unless given,
+# and DESTDIR (a staging root for packagers) is prepended when copying only,
+# so no installed file names it. Nothing compiled depends on PREFIX either:
 # mcbox.pc is written at install time from mk/mcbox.pc.in, and mcbox finds
 # its commands beside its own executable. So `make install PREFIX=/opt/x`
 # after `make install` copies again and compiles nothing.
@@ -64,11 +64,11 @@ PC_REL := $(patsubst $(PREFIX)/%,%,$(PKGCONFIGDIR))
 PC_UP := $(subst $(pc_space),/,$(foreach d,$(subst /, ,$(PC_REL)),..))
 PC_PREFIX = $(if $(filter $(PKGCONFIGDIR),$(PC_REL)),$(PREFIX),$${pcfiledir}/$(PC_UP))
 
-MAN_PAGES := mcbox mcbox-check mcbox-warp
+MAN_PAGES := mcbox mcbox-check mcbox-warp mcbox-scene
 MAN_OUT := $(patsubst %,$(B)/man/man1/%.1,$(MAN_PAGES))
 
 # Installed name = built program; nothing generic (warp, pi, ...) reaches BINDIR.
-INSTALL_PROGRAMS := mcbox=mcbox mcbox-check=mcbox-check mcbox-warp=warp
+INSTALL_PROGRAMS := mcbox=mcbox mcbox-check=mcbox-check mcbox-warp=warp mcbox-scene=mcbox-scene
 INSTALL_BUILT := $(foreach p,$(INSTALL_PROGRAMS),$(B)/bin/$(lastword $(subst =, ,$(p)))) \
                  $(PIC_LIB)/$(SO_REAL) $(PIC_LIB)/libmcbox.a $(MAN_OUT)
 
@@ -122,6 +122,7 @@ _install: $(INSTALL_BUILT)
 	ln -sf $(SO_REAL) '$(DESTDIR)$(LIBDIR)/$(SO_NAME)'
 	ln -sf $(SO_NAME) '$(DESTDIR)$(LIBDIR)/libmcbox.so'
 	$(INSTALL_DATA) check/check.h '$(DESTDIR)$(INCLUDEDIR)/mcbox/check.h'
+	$(INSTALL_DATA) check/image.h '$(DESTDIR)$(INCLUDEDIR)/mcbox/image.h'
 	$(INSTALL_DATA) $(MAN_OUT) '$(DESTDIR)$(MANDIR)/man1/'
 	sed -e '/^##/d' -e 's|@PREFIX@|$(PC_PREFIX)|' \
 	    -e 's|@LIBDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))|' \
@@ -138,7 +139,8 @@ uninstall:
 	rm -f $(foreach p,$(INSTALL_PROGRAMS),'$(DESTDIR)$(BINDIR)/$(firstword $(subst =, ,$(p)))')
 	rm -f '$(DESTDIR)$(LIBDIR)/$(SO_REAL)' '$(DESTDIR)$(LIBDIR)/$(SO_NAME)' \
 	  '$(DESTDIR)$(LIBDIR)/libmcbox.so' '$(DESTDIR)$(LIBDIR)/libmcbox.a'
-	rm -f '$(DESTDIR)$(INCLUDEDIR)/mcbox/check.h' '$(DESTDIR)$(PKGCONFIGDIR)/mcbox.pc'
+	rm -f '$(DESTDIR)$(INCLUDEDIR)/mcbox/check.h' '$(DESTDIR)$(INCLUDEDIR)/mcbox/image.h' \
+	    '$(DESTDIR)$(PKGCONFIGDIR)/mcbox.pc'
 	rm -f $(foreach m,$(MAN_PAGES),'$(DESTDIR)$(MANDIR)/man1/$(m).1')
 	rmdir '$(DESTDIR)$(INCLUDEDIR)/mcbox' 2>/dev/null || true
 	@if [ -z '$(DESTDIR)' ] && [ "$$(id -u)" = 0 ] && command -v ldconfig >/dev/null; then \

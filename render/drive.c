@@ -5,6 +5,7 @@
  * render/engine.h. */
 #include "render/render.h"
 
+#include <math.h>
 #include <omp.h>
 #include <stdlib.h>
 
@@ -113,6 +114,8 @@ static bool job_ok(const rt_render_job *job, const rt_image *img, int first, int
     return job->scene && job->spp >= 1 && job->camera.width == img->width &&
            job->camera.height == img->height && job->path.max_depth >= 0 &&
            !(splatting && job->path.max_depth > RT_BDPT_MAX_DEPTH) &&
+           /* Light paths start on emitters; a sky is not one. */
+           !(splatting && rt_scene_emitter_count(job->scene) == 0) &&
            !(job->sampler == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX) && step >= 1 &&
            step <= img->height && first >= 0 && first < img->height &&
            (!splatting || (splats && splats->width == img->width && splats->height == img->height));
@@ -213,5 +216,19 @@ int rt_render_rows(const rt_render_job *job, rt_image *img, int first, int step,
 
 int rt_render(const rt_render_job *job, rt_image *img, rt_render_stats *stats)
 {
-    return rt_render_rows(job, img, 0, 1, stats);
+    if (!job->path.neg.book_spp_divisor)
+        return rt_render_rows(job, img, 0, 1, stats);
+    /* The negative control: the book's square grid of samples, then its
+     * division by the spp asked for. */
+    rt_render_job j = *job;
+    uint64_t side = (uint64_t)sqrt((double)job->spp);
+    j.spp = side * side;
+    int rc = rt_render_rows(&j, img, 0, 1, stats);
+    double f = (double)j.spp / (double)job->spp;
+    for (size_t i = 0; rc >= 0 && i < (size_t)img->width * (size_t)img->height; i++)
+        for (int c = 0; c < 3; c++) {
+            img->px[i].mean[c] *= f;
+            img->px[i].m2[c] *= f * f;
+        }
+    return rc;
 }

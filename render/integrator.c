@@ -105,6 +105,33 @@ static double lights_value(const lights_at *a, vec3 d)
     return a->objects ? pdf_value(&a->list, d) : rt_lights_at_value(&a->cache, d);
 }
 
+/* The light list's density at dir as the estimator divides by it: the
+ * list's, times the negative controls' factors. For a direction toward
+ * the quad emitter at distance t, whose normal makes the cosine c with it,
+ * the density per unit solid angle is t^2 / (A c) (dA c / t^2 = dw):
+ * without the c it is that times c, and the area density 1 / A that times
+ * c / t^2. */
+static double light_density(const rt_path_settings *ps, const lights_at *a, vec3 dir)
+{
+    double pl = lights_value(a, dir) * (1.0 + ps->neg.light_pdf_error);
+    if (!(ps->neg.light_drop_cos || ps->neg.light_area_density) || a->objects || !(pl > 0.0))
+        return pl;
+    for (int i = 0; i < a->cache.n; i++) {
+        const rt_light *l = &a->cache.lights[i];
+        double dn = vec3_dot(l->normal, dir);
+        if (l->kind != RT_PRIM_QUAD || dn == 0.0)
+            continue;
+        double t = a->cache.num[i] / dn;
+        vec3 rel = vec3_sub(vec3_madd(a->cache.origin, dir, t), l->q);
+        double al = vec3_dot(l->w, vec3_cross(rel, l->v)), be = vec3_dot(l->w, vec3_cross(l->u, rel));
+        if (t > 0.0 && al >= 0.0 && al <= 1.0 && be >= 0.0 && be <= 1.0) {
+            double c = fabs(dn);
+            return ps->neg.light_area_density ? pl * c / (t * t) : pl * c;
+        }
+    }
+    return pl;
+}
+
 /* The material's density at a diffuse hit: pdf_cosine about the normal
  * (rt_scatter_pdf), through the formulas pdf_cosine uses. */
 RT_HOT_INLINE vec3 material_generate(const rt_scatter *sr, rt_sampler *sampler)
@@ -181,14 +208,26 @@ rt_path_state rt_path_begin(const rt_path_settings *ps, rt_ray r)
     return p;
 }
 
+/* rt_roulette, or with the negative control the same draw without the
+ * survivor's division by its probability. */
+static bool roulette(const rt_path_settings *ps, int depth, vec3 beta_albedo, vec3 *beta,
+                     rt_sampler *sampler)
+{
+    vec3 before = *beta;
+    if (!rt_roulette(ps->rr_start, depth, beta_albedo, beta, sampler))
+        return false;
+    if (ps->neg.roulette_no_divide)
+        *beta = before;
+    return true;
+}
+
 /* The end of every step that goes on: roulette at the vertex, whose
  * throughput times albedo is beta_albedo, then the depth limit. */
 static void path_next(const rt_path_settings *ps, rt_path_state *p, vec3 beta_albedo,
                       rt_sampler *sampler)
 {
     /* The flag is tested here too so that, off, the call is skipped. */
-    if (ps->russian_roulette &&
-        !rt_roulette(ps->rr_start, p->depth, beta_albedo, &p->beta, sampler))
+    if (ps->russian_roulette && !roulette(ps, p->depth, beta_albedo, &p->beta, sampler))
         p->done = true;
     else if (++p->depth >= ps->max_depth)
         p->done = true;
@@ -334,7 +373,7 @@ static double continued_weight(const rt_scene *s, const rt_path_settings *ps, ve
         return 1.0;
     lights_at lights;
     lights_prepare(&lights, s, ps, from, nee_emitters_only(ps));
-    double pl = lights_value(&lights, dir) * (1.0 + ps->neg.light_pdf_error);
+    double pl = light_density(ps, &lights, dir);
     if (ps->strategy == RT_LIGHT)
         return pl > 0.0 ? 0.0 : 1.0;
     return power_weight(p_mat, pl);
@@ -354,7 +393,7 @@ static vec3 direct_light(const rt_scene *s, const rt_path_settings *ps, const rt
     lights_at lights;
     lights_prepare(&lights, s, ps, h->p, nee_emitters_only(ps));
     vec3 dir = lights_generate(&lights, sampler);
-    double pl = lights_value(&lights, dir) * (1.0 + ps->neg.light_pdf_error);
+    double pl = light_density(ps, &lights, dir);
     double sp = rt_material_scattering_pdf(m, h, dir);
     if (!(sp > 0.0 && pl > 0.0))
         return zero;
@@ -418,7 +457,7 @@ static vec3 nee_radiance(const rt_scene *s, const rt_path_settings *ps, rt_ray r
         }
         if (ps->neg.roulette_after_direction)
             beta_albedo = beta;
-        if (ps->russian_roulette && !rt_roulette(ps->rr_start, depth, beta_albedo, &beta, sampler))
+        if (ps->russian_roulette && !roulette(ps, depth, beta_albedo, &beta, sampler))
             break;
     }
     /* END SNIPPET nee_loop */

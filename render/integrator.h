@@ -85,6 +85,20 @@ typedef struct rt_negative_controls {
      * still, but the mixture's lamp-aimed directions get a small q just
      * before the lamp: several times the variance). */
     bool roulette_after_direction;
+    /* Next-event estimation (RT_LIGHT, RT_MIS) with one quad emitter, as
+     * a renderer that converts between area and solid angle wrongly:
+     * light_drop_cos divides by d^2 / A, the solid-angle density without
+     * the cosine at the light; light_area_density divides by 1 / A, the
+     * area density where a solid-angle one belongs (render/integrator.c). */
+    bool light_drop_cos, light_area_density;
+    /* render/roulette.h: a path that survives roulette keeps its
+     * throughput instead of dividing it by the survival probability
+     * (RT_LIGHT and RT_MIS, and the book's strategies). */
+    bool roulette_no_divide;
+    /* rt_render: the loop of the book's release code, floor(sqrt(spp))^2
+     * samples divided by spp, which darkens every pixel when spp is not a
+     * square. */
+    bool book_spp_divisor;
 } rt_negative_controls;
 
 /* Initialise with designated initialisers (or start from

@@ -11,7 +11,7 @@ if [ "${1:-}" = "--always" ]; then
     shift
 fi
 if [ "$quick" = 1 ] && command -v pkg-config >/dev/null 2>&1 &&
-   pkg-config --exists cmocka gsl libpng 2>/dev/null &&
+   pkg-config --exists cmocka gsl libpng OpenEXR 2>/dev/null &&
    command -v cc >/dev/null 2>&1 && command -v gnuplot >/dev/null 2>&1 &&
    command -v pandoc >/dev/null 2>&1 &&
    [ -f /usr/share/texmf/fonts/opentype/public/tex-gyre-math/texgyrepagella-math.otf ]; then

@@ -62,10 +62,12 @@ lib=$stage/usr/lib
 
 installed_files() { (cd "$1" && find . ! -type d | sed 's|^\./||' | LC_ALL=C sort); }
 expected_files() { # $1 = prefix without the leading /
-    printf '%s\n' "$1/bin/mcbox" "$1/bin/mcbox-check" "$1/bin/mcbox-warp" \
-        "$1/include/mcbox/check.h" "$1/lib/libmcbox.a" "$1/lib/libmcbox.so" \
+    printf '%s\n' "$1/bin/mcbox" "$1/bin/mcbox-check" "$1/bin/mcbox-scene" "$1/bin/mcbox-warp" \
+        "$1/include/mcbox/check.h" "$1/include/mcbox/image.h" \
+        "$1/lib/libmcbox.a" "$1/lib/libmcbox.so" \
         "$1/lib/libmcbox.so.$major" "$1/lib/libmcbox.so.$version" "$1/lib/pkgconfig/mcbox.pc" \
-        "$1/share/man/man1/mcbox-check.1" "$1/share/man/man1/mcbox-warp.1" \
+        "$1/share/man/man1/mcbox-check.1" "$1/share/man/man1/mcbox-scene.1" \
+        "$1/share/man/man1/mcbox-warp.1" \
         "$1/share/man/man1/mcbox.1" | LC_ALL=C sort
 }
 check "the installed files, exactly" diff <(expected_files usr) <(installed_files "$stage")
@@ -83,8 +85,11 @@ check "NEEDED libgsl and lib$omp (the library carries its dependencies)" \
     bash -c 'grep -q "\[libgsl\.so" <<<"$1" && grep -q "\[lib$2\.so" <<<"$1"' _ "$dyn" "$omp"
 # The header's functions: the preprocessed header (no comments), every
 # mcbox_ name followed by a parenthesis.
+# The headers' functions and data (img_transfer_names[]): every mcbox_
+# name followed by a parenthesis or a bracket, in the three headers.
 header_functions() {
-    cc -E -P -x c "$hdr" | grep -oE 'mcbox_[a-z0-9_]+ *\(' | sed 's/ *($//' | LC_ALL=C sort -u
+    cat "$hdr" "${hdr%/*}/image.h" "${hdr%/*}/image_io.h" | cc -E -P -x c - |
+        grep -oE 'mcbox_[a-z0-9_]+ *[([]' | sed 's/ *[([]$//' | LC_ALL=C sort -u
 }
 exported() { nm -D --defined-only "$1" | awk '$2 != "A" { sub(/@.*/, "", $3); print $3 }' | LC_ALL=C sort; }
 # clang's OpenMP reductions lock a common .gomp_critical_user_* variable that
@@ -93,7 +98,7 @@ static_globals() {
     nm -g --defined-only "$1" | awk 'NF == 3 && $3 !~ /^\.gomp_critical_user_/ { print $3 }' |
         LC_ALL=C sort
 }
-echo "      $(exported "$lib/libmcbox.so.$version" | wc -l) exported symbols, $(header_functions | wc -l) functions in mcbox/check.h"
+echo "      $(exported "$lib/libmcbox.so.$version" | wc -l) exported symbols, $(header_functions | wc -l) functions in mcbox/check.h and mcbox/image.h"
 check "exported symbols of libmcbox.so = the header's functions" \
     diff <(header_functions) <(exported "$lib/libmcbox.so.$version")
 check "global symbols of libmcbox.a = the header's functions" \
@@ -129,19 +134,19 @@ check "PKG_CONFIG_PATH alone (no SYSROOT, no LIBDIR) finds the stage" \
 cflags=$(pkg-config --cflags mcbox) libs=$(pkg-config --libs mcbox)
 static_libs=$(pkg-config --libs --static mcbox)
 
-cat >"$work/alone.c" <<'EOF'
-#include <mcbox/check.h>
-EOF
-cp "$work/alone.c" "$work/alone.cpp"
-for cc in cc gcc clang; do
-    command -v $cc >/dev/null || continue
-    check "mcbox/check.h alone, $cc -std=c99 -Wall -Wextra -Wpedantic" \
-        $cc -std=c99 -Wall -Wextra -Wpedantic -Werror $cflags -c "$work/alone.c" -o "$work/alone.o"
-done
-for cxx in g++ clang++; do
-    command -v $cxx >/dev/null || continue
-    check "mcbox/check.h alone, $cxx -std=c++11 -Wall -Wextra -Wpedantic" \
-        $cxx -std=c++11 -Wall -Wextra -Wpedantic -Werror $cflags -c "$work/alone.cpp" -o "$work/alone.o"
+for h in check image; do
+    echo "#include <mcbox/$h.h>" >"$work/alone.c"
+    cp "$work/alone.c" "$work/alone.cpp"
+    for cc in cc gcc clang; do
+        command -v $cc >/dev/null || continue
+        check "mcbox/$h.h alone, $cc -std=c99 -Wall -Wextra -Wpedantic" \
+            $cc -std=c99 -Wall -Wextra -Wpedantic -Werror $cflags -c "$work/alone.c" -o "$work/alone.o"
+    done
+    for cxx in g++ clang++; do
+        command -v $cxx >/dev/null || continue
+        check "mcbox/$h.h alone, $cxx -std=c++11 -Wall -Wextra -Wpedantic" \
+            $cxx -std=c++11 -Wall -Wextra -Wpedantic -Werror $cflags -c "$work/alone.cpp" -o "$work/alone.o"
+    done
 done
 
 # A square sampler that is right: it must pass, through every kind of link.
@@ -209,7 +214,7 @@ check "mcbox nope: exit 2, one line 'mcbox: ...' on stderr, nothing on stdout" \
     bash -c "out=\$('$bin/mcbox' nope 2>'$work/nope.err'); rc=\$?; [ \$rc = 2 ] && [ -z \"\$out\" ] &&
              [ \$(wc -l <'$work/nope.err') = 1 ] && grep -q '^mcbox: ' '$work/nope.err'"
 if command -v man >/dev/null; then
-    for page in mcbox mcbox-check mcbox-warp; do
+    for page in mcbox mcbox-check mcbox-scene mcbox-warp; do
         check "man -l $page.1 renders, no warnings" \
             bash -c "MANWIDTH=80 man --warnings -l '$stage/usr/share/man/man1/$page.1' >'$work/$page.txt' 2>'$work/$page.err' &&
                      [ ! -s '$work/$page.err' ] && grep -q '^NAME' '$work/$page.txt' || { cat '$work/$page.err'; false; }"

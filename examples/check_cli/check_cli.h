@@ -131,6 +131,42 @@ void cli_print_summary(FILE *f, const cli_app *c, const mcbox_check_result *r);
 /* The result as a JUnit suite of one case into the open --junit file. */
 bool cli_write_junit(cli_app *c, const mcbox_check_result *r, double seconds);
 
+/* The pieces of the reports the image door shares: a JSON string, a
+ * ", key: value" member (null for a non-finite number), and a JUnit suite
+ * of one case (<failure> for "fail", <error> for any verdict but "pass";
+ * summary and err_text may be NULL). */
+void cli_json_string(FILE *f, const char *s);
+void cli_json_key_string(FILE *f, const char *key, const char *v);
+void cli_json_number(FILE *f, const char *key, double v);
+void cli_json_vector(FILE *f, const char *key, const double *v, int n);
+void cli_junit_suite(FILE *f, const char *name, const char *verdict, const char *message,
+                     const char *summary, const char *err_text, double seconds);
+
+/* --- image.c: the image door (mcbox/image.h) --------------------------------- */
+
+/* mcbox-check --image ...: reads the renders and the truth, runs
+ * mcbox_image_check, reports; returns the exit status (0 pass, 1 fail; every
+ * error exits 2 through cli_fail). */
+int cli_image_main(int argc, char **argv);
+
+/* What the image reports say besides the result. */
+typedef struct cli_image_info {
+    const char *name, *truth; /* the render's name; the scene or truth file */
+    int renders, width, height; /* renders: 0 for a moment pair */
+    double truth_error;
+    double seconds;
+} cli_image_info;
+
+/* --- image_report.c ---------------------------------------------------------- */
+
+/* The summary on stdout (or the JSON object with json), the JUnit suite
+ * in junit and the picture of the block z values in picture (.png or
+ * .ppm), each when asked for; a file that cannot be written is a
+ * warning on stderr. */
+struct mcbox_image_result;
+void cli_image_report(const cli_image_info *info, const struct mcbox_image_result *r, bool json,
+                      const char *junit, const char *picture);
+
 /* --- plot.c ---------------------------------------------------------------- */
 
 /* DIR/NAME.dat and DIR/NAME.png (gnuplot); a failure is a warning. */

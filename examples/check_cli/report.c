@@ -48,7 +48,7 @@ const char *cli_verdict(const mcbox_check_result *r)
     return r->pass ? "pass" : r->undetermined ? "undetermined" : "fail";
 }
 
-static void json_string(FILE *f, const char *s)
+void cli_json_string(FILE *f, const char *s)
 {
     fputc('"', f);
     for (; *s; s++) {
@@ -63,13 +63,13 @@ static void json_string(FILE *f, const char *s)
     fputc('"', f);
 }
 
-static void json_key_string(FILE *f, const char *key, const char *v)
+void cli_json_key_string(FILE *f, const char *key, const char *v)
 {
     fprintf(f, ", \"%s\": ", key);
-    json_string(f, v);
+    cli_json_string(f, v);
 }
 
-static void json_number(FILE *f, const char *key, double v)
+void cli_json_number(FILE *f, const char *key, double v)
 {
     if (isfinite(v))
         fprintf(f, ", \"%s\": %.17g", key, v);
@@ -77,7 +77,7 @@ static void json_number(FILE *f, const char *key, double v)
         fprintf(f, ", \"%s\": null", key);
 }
 
-static void json_vector(FILE *f, const char *key, const double *v, int n)
+void cli_json_vector(FILE *f, const char *key, const double *v, int n)
 {
     fprintf(f, ", \"%s\": [", key);
     for (int j = 0; j < n; j++)
@@ -98,27 +98,27 @@ static void json_options(FILE *f, const cli_app *c)
                {"weight_tol", o->weight_tol}, {"invert_tol", o->invert_tol},
                {"quad_error_max", o->quad_error_max}, {"lobe_width", o->lobe_width}};
     for (size_t k = 0; k < sizeof tol / sizeof tol[0]; k++)
-        json_number(f, tol[k].key, tol[k].v);
+        cli_json_number(f, tol[k].key, tol[k].v);
     fprintf(f, ", \"quad_order\": %d, \"quad_depth\": %d", o->quad_order, o->quad_depth);
-    json_vector(f, "lobe_axis", o->lobe_axis, 3);
+    cli_json_vector(f, "lobe_axis", o->lobe_axis, 3);
 }
 
 /* The chart and the atoms' cells of the table. */
 static void json_table(FILE *f, const cli_app *c, const mcbox_check_table *t)
 {
     fprintf(f, ", \"chart\": {\"dims\": %d, \"nx\": %d, \"ny\": %d", t->dims, t->nx, t->ny);
-    json_vector(f, "lo", t->lo, t->dims);
-    json_vector(f, "hi", t->hi, t->dims);
+    cli_json_vector(f, "lo", t->lo, t->dims);
+    cli_json_vector(f, "hi", t->hi, t->dims);
     fputs("}, \"atoms\": [", f);
     size_t chart = (size_t)t->nx * (size_t)t->ny;
     for (size_t k = 0; k < c->s.n_atoms && chart + k < t->cells; k++) {
         fputs(k ? ", {" : "{", f);
         fputs("\"index\": ", f);
         fprintf(f, "%zu", k);
-        json_vector(f, "x", c->atom_x + k * (size_t)c->dims, c->dims);
-        json_number(f, "mass", c->atom_mass[k]);
-        json_number(f, "observed", t->observed[chart + k]);
-        json_number(f, "expected", t->expected[chart + k]);
+        cli_json_vector(f, "x", c->atom_x + k * (size_t)c->dims, c->dims);
+        cli_json_number(f, "mass", c->atom_mass[k]);
+        cli_json_number(f, "observed", t->observed[chart + k]);
+        cli_json_number(f, "expected", t->expected[chart + k]);
         fputc('}', f);
     }
     fputc(']', f);
@@ -128,17 +128,17 @@ void cli_print_json(FILE *f, const cli_app *c, const mcbox_check_result *r,
                     const mcbox_check_table *t)
 {
     fputs("{\"name\": ", f);
-    json_string(f, c->a.name);
-    json_key_string(f, "verdict", cli_verdict(r));
+    cli_json_string(f, c->a.name);
+    cli_json_key_string(f, "verdict", cli_verdict(r));
     fprintf(f, ", \"pass\": %s, \"undetermined\": %s", r->pass ? "true" : "false",
             r->undetermined ? "true" : "false");
-    json_key_string(f, "message", r->message);
-    json_key_string(f, "warning", r->warning);
-    json_key_string(f, "note", c->note);
-    json_number(f, "statistic", r->statistic);
+    cli_json_key_string(f, "message", r->message);
+    cli_json_key_string(f, "warning", r->warning);
+    cli_json_key_string(f, "note", c->note);
+    cli_json_number(f, "statistic", r->statistic);
     fprintf(f, ", \"dof\": %d", r->dof);
-    json_number(f, "pvalue", r->pvalue);
-    json_number(f, "level", r->level);
+    cli_json_number(f, "pvalue", r->pvalue);
+    cli_json_number(f, "level", r->level);
     const struct {
         const char *key;
         uint64_t v;
@@ -160,8 +160,8 @@ void cli_print_json(FILE *f, const cli_app *c, const mcbox_check_result *r,
                    {"scale_detectable", r->scale_detectable},
                    {"lobe_hint_width", r->lobe_hint_width}};
     for (size_t k = 0; k < sizeof figures / sizeof figures[0]; k++)
-        json_number(f, figures[k].key, figures[k].v);
-    json_vector(f, "lobe_hint_axis", r->lobe_hint_axis, 3);
+        cli_json_number(f, figures[k].key, figures[k].v);
+    cli_json_vector(f, "lobe_hint_axis", r->lobe_hint_axis, 3);
     if (t)
         json_table(f, c, t);
     json_options(f, c);
@@ -228,7 +228,7 @@ static void xml_text(FILE *f, const char *s)
 /* A suite of one case: <failure> for a failed verdict, <error> when there
  * is none (undetermined, bad input, a broken protocol). summary may be
  * NULL. */
-static void junit_suite(FILE *f, const char *name, const char *verdict, const char *message,
+void cli_junit_suite(FILE *f, const char *name, const char *verdict, const char *message,
                         const char *summary, const char *err_text, double seconds)
 {
     bool failure = strcmp(verdict, "fail") == 0, error = !failure && strcmp(verdict, "pass") != 0;
@@ -269,7 +269,7 @@ bool cli_write_junit(cli_app *c, const mcbox_check_result *r, double seconds)
     }
     snprintf(err_text, sizeof err_text, "%s%s%s%s", r->warning[0] ? "warning: " : "", r->warning,
              r->warning[0] && c->note[0] ? "\n" : "", c->note[0] ? c->note : "");
-    junit_suite(c->junit.f, c->a.name, cli_verdict(r), r->message, text, err_text, seconds);
+    cli_junit_suite(c->junit.f, c->a.name, cli_verdict(r), r->message, text, err_text, seconds);
     free(text);
     c->junit_open = false;
     return app_outfile_commit(&c->junit);
@@ -282,9 +282,9 @@ static void report_error(const char *msg)
     const char *name = where_to.name ? where_to.name : "sampler";
     if (where_to.json) {
         fputs("{\"name\": ", stdout);
-        json_string(stdout, name);
+        cli_json_string(stdout, name);
         fputs(", \"verdict\": \"error\", \"pass\": false, \"undetermined\": false", stdout);
-        json_key_string(stdout, "message", msg);
+        cli_json_key_string(stdout, "message", msg);
         fputs("}\n", stdout);
         fflush(stdout);
     }
@@ -297,7 +297,7 @@ static void report_error(const char *msg)
     if (c)
         c->junit_open = false;
     double seconds = c && c->t0 > 0.0 ? cli_now() - c->t0 : 0.0;
-    junit_suite(o->f, name, "error", msg, NULL, NULL, seconds);
+    cli_junit_suite(o->f, name, "error", msg, NULL, NULL, seconds);
     app_outfile_commit(o);
 }
 
