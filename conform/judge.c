@@ -28,6 +28,10 @@ int cf_judge(const cf_scene *s, const cf_judge_job *job, const mcbox_image_optio
         rc = cf_truth_image(s, job->size, job->size, grey, &err);
     for (size_t i = 0; rc == 0 && i < 3 * n; i++)
         truth[i] = grey[i / 3];
+    /* Light paths start on emitters, and a sky is none: a strategy that
+     * splats would render the sky's scene black. */
+    if (rc == 0 && rt_strategy_splats(job->path.strategy) && rt_scene_emitter_count(scene) == 0)
+        rc = 1;
     for (int k = 0; rc == 0 && k < job->renders; k++) {
         rt_render_job rj = rt_render_job_default(scene, rt_camera_make(cp, job->size, job->size));
         rj.path = job->path;
@@ -36,7 +40,7 @@ int cf_judge(const cf_scene *s, const cf_judge_job *job, const mcbox_image_optio
         rj.seed = job->seed + (uint64_t)k;
         rj.threads = job->threads;
         if (rt_render(&rj, im, NULL) != 0) {
-            rc = 1;
+            rc = -1;
             break;
         }
         img[k] = malloc(3 * n * sizeof *img[k]);

@@ -31,9 +31,10 @@ typedef struct cf_judge_job {
 } cf_judge_job;
 
 /* Renders and judges. Returns 0 with the verdict in *r (free it with
- * mcbox_image_result_free), 1 when the renderer refuses the job (a
- * strategy that starts light paths on emitters in a scene without one),
- * -1 when out of memory or on bad arguments. *truth_error (may be NULL)
+ * mcbox_image_result_free), 1 when the job cannot render the scene (a
+ * strategy that starts light paths on emitters, light tracing or
+ * bidirectional, in a scene lit by its sky alone), -1 when out of memory
+ * or on bad arguments. *truth_error (may be NULL)
  * receives the bound the truth was given. */
 int cf_judge(const cf_scene *s, const cf_judge_job *job, const mcbox_image_options *opt,
              mcbox_image_result *r, double *truth_error);

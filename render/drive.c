@@ -114,8 +114,6 @@ static bool job_ok(const rt_render_job *job, const rt_image *img, int first, int
     return job->scene && job->spp >= 1 && job->camera.width == img->width &&
            job->camera.height == img->height && job->path.max_depth >= 0 &&
            !(splatting && job->path.max_depth > RT_BDPT_MAX_DEPTH) &&
-           /* Light paths start on emitters; a sky is not one. */
-           !(splatting && rt_scene_emitter_count(job->scene) == 0) &&
            !(job->sampler == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX) && step >= 1 &&
            step <= img->height && first >= 0 && first < img->height &&
            (!splatting || (splats && splats->width == img->width && splats->height == img->height));
