@@ -83,7 +83,6 @@ static int validate(const job *j, mcbox_image_result *r)
 /* What a part's test rests on before the inflation. */
 typedef struct sums {
     double truth, mean, v_ind, v_blk, v_truth, allowance;
-    int pixels;
 } sums;
 
 static sums part_sums(const job *j, int x0, int y0, int x1, int y1, int c)
@@ -107,24 +106,21 @@ static sums part_sums(const job *j, int x0, int y0, int x1, int y1, int c)
                 half_sum += fabs(m) * s->rel_precision;
                 continue;
             }
-            double sum = 0.0, sq = 0.0, half;
+            double v[64], sum = 0.0, sq = 0.0, half;
             for (int r = 0; r < k; r++) {
-                double v = value_of(j, r, i, &half);
-                sum += v;
-                part_mean[r] += v;
+                v[r] = value_of(j, r, i, &half);
+                sum += v[r];
+                part_mean[r] += v[r];
                 half_sum += half / k;
             }
             double m = sum / k;
-            for (int r = 0; r < k; r++) {
-                double d = value_of(j, r, i, &half) - m;
-                sq += d * d;
-            }
+            for (int r = 0; r < k; r++)
+                sq += (v[r] - m) * (v[r] - m);
             o.mean += m;
             o.v_ind += sq / (k - 1) / k;
         }
     int n = (x1 - x0) * (y1 - y0);
     double n2 = (double)n * (double)n;
-    o.pixels = n;
     o.truth /= n;
     o.mean /= n;
     o.v_ind /= n2;
@@ -196,10 +192,20 @@ typedef struct grid {
     int b, nx, ny, width, height;
 } grid;
 
+/* Block (bx, by) as pixels [x0, x1) x [y0, y1); the last ones are cut
+ * at the image's edge. */
+static void block_rect(const grid *g, int bx, int by, int *x0, int *y0, int *x1, int *y1)
+{
+    *x0 = bx * g->b, *y0 = by * g->b;
+    *x1 = *x0 + g->b < g->width ? *x0 + g->b : g->width;
+    *y1 = *y0 + g->b < g->height ? *y0 + g->b : g->height;
+}
+
 static int block_pixels(const grid *g, int bx, int by)
 {
-    int w = g->width - bx * g->b, h = g->height - by * g->b;
-    return (w < g->b ? w : g->b) * (h < g->b ? h : g->b);
+    int x0, y0, x1, y1;
+    block_rect(g, bx, by, &x0, &y0, &x1, &y1);
+    return (x1 - x0) * (y1 - y0);
 }
 
 /* BEGIN SNIPPET image_floor */
@@ -316,13 +322,13 @@ int mcbox_image_check(const mcbox_image_set *set, const mcbox_image_options *opt
     /* The inflation: block-mean variance over pixel-independent variance,
      * as a ratio of sums over every block, with (K - 1) degrees of freedom
      * per block behind it. */
+    grid gr = {b, r->blocks_x, r->blocks_y, set->width, set->height};
     double sum_blk = 0.0, sum_ind = 0.0;
     for (int by = 0; by < r->blocks_y; by++)
         for (int bx = 0; bx < r->blocks_x; bx++)
             for (int c = 0; c < 3; c++) {
-                int x0 = bx * b, y0 = by * b;
-                int x1 = x0 + b < set->width ? x0 + b : set->width;
-                int y1 = y0 + b < set->height ? y0 + b : set->height;
+                int x0, y0, x1, y1;
+                block_rect(&gr, bx, by, &x0, &y0, &x1, &y1);
                 sums *s = &bs[((size_t)by * (size_t)r->blocks_x + (size_t)bx) * 3 + (size_t)c];
                 *s = part_sums(&j, x0, y0, x1, y1, c);
                 sum_blk += s->v_blk;
@@ -343,7 +349,6 @@ int mcbox_image_check(const mcbox_image_set *set, const mcbox_image_options *opt
                  "renders that splat light paths need 2 or more separate renders");
     }
 
-    grid gr = {b, r->blocks_x, r->blocks_y, set->width, set->height};
     if (floor_variances(bs, &gr) != 0) {
         free(bs);
         free(det);
@@ -393,9 +398,8 @@ int mcbox_image_check(const mcbox_image_set *set, const mcbox_image_options *opt
     for (size_t i = 0; i < nb; i++) {
         size_t cell = i / 3;
         int bx = (int)(cell % (size_t)r->blocks_x), by = (int)(cell / (size_t)r->blocks_x);
-        int x0 = bx * b, y0 = by * b;
-        int x1 = x0 + b < set->width ? x0 + b : set->width;
-        int y1 = y0 + b < set->height ? y0 + b : set->height;
+        int x0, y0, x1, y1;
+        block_rect(&gr, bx, by, &x0, &y0, &x1, &y1);
         mcbox_image_part p = judge(&bs[i], x0, y0, x1, y1, (int)(i % 3), r->inflation, r->dof, z_crit);
         r->z[i] = p.z;
         det[i] = p.truth > 0.0 ? p.detectable / p.truth : (double)INFINITY;

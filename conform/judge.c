@@ -9,6 +9,15 @@
 #include "conform/truth.h"
 #include "render/render.h"
 
+int cf_image_regions(const cf_scene *s, mcbox_image_region *out)
+{
+    for (int g = 0; g < s->n_regions; g++) {
+        const cf_region *rg = &s->regions[g];
+        out[g] = (mcbox_image_region){rg->name, rg->x0, rg->y0, rg->x1, rg->y1};
+    }
+    return s->n_regions;
+}
+
 int cf_judge(const cf_scene *s, const cf_judge_job *job, const mcbox_image_options *opt,
              mcbox_image_result *r, double *truth_error)
 {
@@ -55,14 +64,10 @@ int cf_judge(const cf_scene *s, const cf_judge_job *job, const mcbox_image_optio
     }
     if (rc == 0) {
         mcbox_image_region regions[CF_MAX_REGIONS];
-        for (int g = 0; g < s->n_regions; g++) {
-            const cf_region *rg = &s->regions[g];
-            regions[g] = (mcbox_image_region){rg->name, rg->x0, rg->y0, rg->x1, rg->y1};
-        }
         mcbox_image_options o = opt ? *opt : (mcbox_image_options){0};
         if (!o.regions) {
             o.regions = regions;
-            o.n_regions = s->n_regions;
+            o.n_regions = cf_image_regions(s, regions);
         }
         mcbox_image_set set = {.width = job->size, .height = job->size, .truth = truth,
                                .truth_error = err + CF_DEPTH_PROMISE, .n_renders = job->renders,

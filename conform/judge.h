@@ -30,6 +30,10 @@ typedef struct cf_judge_job {
     double truth_error;
 } cf_judge_job;
 
+/* The scene's regions as the image check takes them (out holds
+ * CF_MAX_REGIONS); returns how many. */
+int cf_image_regions(const cf_scene *s, mcbox_image_region *out);
+
 /* Renders and judges. Returns 0 with the verdict in *r (free it with
  * mcbox_image_result_free), 1 when the job cannot render the scene (a
  * strategy that starts light paths on emitters, light tracing or

@@ -27,6 +27,11 @@
  * that right in the image is +x (the camera's u = vup x w). */
 #define WALL_CAMERA .lookfrom = {0.0, 2.0, 0.0}, .lookat = {0.0, 0.0, 0.0}, .vup = {0.0, 0.0, -1.0}
 
+/* The sphere scenes' regions: beside the emitter, and the far side. */
+#define SPHERE_REGIONS                                                                        \
+    .n_regions = 2,                                                                           \
+    .regions = {{"nearest the emitter", 0.8, 0.3, 1.0, 0.7}, {"farthest from it", 0.0, 0.0, 0.25, 1.0}}
+
 static const cf_scene scenes[] = {
     {
         .name = "furnace-grey",
@@ -100,9 +105,7 @@ static const cf_scene scenes[] = {
          * view is 0.75 wide at its height, the sphere starts at x = 1.25). */
         .shapes = {WALL_FLOOR, {.kind = CF_SPHERE, .center = {1.5, 0.5, 0.0}, .radius = 0.25,
                                 .material = 1}},
-        .n_regions = 2,
-        .regions = {{"nearest the emitter", 0.8, 0.3, 1.0, 0.7},
-                    {"farthest from it", 0.0, 0.0, 0.25, 1.0}},
+        SPHERE_REGIONS,
     },
     {
         .name = "sphere-horizon",
@@ -121,9 +124,7 @@ static const cf_scene scenes[] = {
          * the sphere's top, the sphere starts at x = 1.1. */
         .shapes = {WALL_FLOOR, {.kind = CF_SPHERE, .center = {1.35, 0.1, 0.0}, .radius = 0.25,
                                 .material = 1}},
-        .n_regions = 2,
-        .regions = {{"nearest the emitter", 0.8, 0.3, 1.0, 0.7},
-                    {"farthest from it", 0.0, 0.0, 0.25, 1.0}},
+        SPHERE_REGIONS,
     },
     {
         .name = "glass-slab",

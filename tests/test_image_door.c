@@ -26,7 +26,7 @@ static char out[1 << 16], err[4096];
  * first on PATH); returns its exit status, stdout in out, stderr in err. */
 static int sh(const char *fmt, ...)
 {
-    char cmd[4096], body[3072];
+    char cmd[8192], body[3072];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(body, sizeof body, fmt, ap);

@@ -20,6 +20,7 @@
 #include "check/image.h"
 #include "imageio/image_io.h"
 #include "conform/conform.h"
+#include "conform/judge.h"
 #include "conform/truth.h"
 #include "examples/common/cli.h"
 
@@ -231,12 +232,8 @@ int cli_image_main(int argc, char **argv)
         truth = grey_to_rgb(g, n);
         free(g);
         set.truth_error = err + CF_DEPTH_PROMISE;
-        for (int i = 0; i < scene->n_regions; i++) {
-            const cf_region *r = &scene->regions[i];
-            regions[i] = (mcbox_image_region){r->name, r->x0, r->y0, r->x1, r->y1};
-        }
         a.o.regions = regions;
-        a.o.n_regions = scene->n_regions;
+        a.o.n_regions = cf_image_regions(scene, regions);
     } else if (a.truth || a.noise) {
         image_args lin = a;
         lin.transfer = NULL;

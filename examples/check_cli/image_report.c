@@ -108,10 +108,8 @@ static void summary(FILE *f, const cli_image_info *in, const mcbox_image_result 
         fprintf(f, "  why: %s\n", r->message);
 }
 
-static void json_part(FILE *f, const char *key, const mcbox_image_part *p)
+static void json_part(FILE *f, const mcbox_image_part *p)
 {
-    if (key)
-        fprintf(f, ", \"%s\": ", key);
     fprintf(f, "{\"x0\": %d, \"y0\": %d, \"x1\": %d, \"y1\": %d, \"channel\": %d", p->x0, p->y0,
             p->x1, p->y1, p->channel);
     cli_json_number(f, "truth", p->truth);
@@ -148,18 +146,18 @@ static void json(FILE *f, const cli_image_info *in, const mcbox_image_result *r)
     fputs(", \"image\": [", f);
     for (int c = 0; c < 3; c++) {
         fputs(c ? ", " : "", f);
-        json_part(f, NULL, &r->image[c]);
+        json_part(f, &r->image[c]);
     }
     fputs("], \"regions\": [", f);
     for (int g = 0; g < r->n_regions; g++)
         for (int c = 0; c < 3; c++) {
             fputs(g || c ? ", " : "", f);
-            json_part(f, NULL, &r->regions[g][c]);
+            json_part(f, &r->regions[g][c]);
         }
     fputs("], \"worst\": [", f);
     for (int i = 0; i < r->n_worst; i++) {
         fputs(i ? ", " : "", f);
-        json_part(f, NULL, &r->worst[i]);
+        json_part(f, &r->worst[i]);
     }
     fputs("]", f);
     size_t nz = (size_t)r->blocks_x * (size_t)r->blocks_y * 3;
