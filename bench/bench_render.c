@@ -58,18 +58,21 @@
 #define BOOK_MSE 1.01e-3
 
 /* The rows of the error table, in order: a strategy (any name of
- * rt_bdpt_strategy_parse), "+rr" for Russian roulette, "+sobol" for the
- * padded Sobol sampler instead of the default, and the share of the --spp
- * samples per pixel it takes (the slow ones fewer, to keep the bench
- * short; the measure does not depend on the sample count). */
+ * rt_bdpt_strategy_parse), "+rr" for Russian roulette, "+stratified" or
+ * "+sobol" for that sampler instead of the strategy's default
+ * (rt_render_sampler_kind: what a render gets without --sampler), and the
+ * share of the --spp samples per pixel it takes (the slow ones fewer, to
+ * keep the bench short; for independent samples the measure does not
+ * depend on the sample count, and bench_convergence shows how far the
+ * stratified ones depart from that). */
 typedef struct error_row {
     const char *name;
     double spp_share;
 } error_row;
 static const error_row error_rows[] = {
-    {"uniform", 1.0},  {"cosine", 1.0},     {"light", 1.0},   {"mixture", 1.0},
-    {"mixture+rr", 1.0}, {"mis", 1.0},       {"lighttrace", 0.5}, {"bdpt", 0.25},
-    {"bdpt+rr", 0.5}, {"mis+rr+sobol", 1.0}, {"bdpt+rr+sobol", 0.5},
+    {"uniform", 1.0},    {"cosine", 1.0},     {"light", 1.0},  {"mixture", 1.0},
+    {"mixture+rr", 1.0}, {"mis", 1.0},        {"mis+rr", 1.0}, {"lighttrace", 0.5},
+    {"bdpt", 0.25},      {"bdpt+rr", 0.5},    {"bdpt+rr+stratified", 0.5},
 };
 
 static const char *const prog = "bench_render";
@@ -168,7 +171,9 @@ static bool error_rows_measure(const rt_scene *scene, rt_camera_params cp, uint6
             char name[32];
             snprintf(name, sizeof name, "%s", error_rows[i].name);
             job.path.russian_roulette = strstr(name, "+rr") != NULL;
-            job.sampler = strstr(name, "+sobol") ? RT_SAMPLER_SOBOL : RT_SAMPLER_STRATIFIED;
+            job.sampler = strstr(name, "+sobol")        ? RT_SAMPLER_SOBOL
+                          : strstr(name, "+stratified") ? RT_SAMPLER_STRATIFIED
+                                                        : RT_SAMPLER_DEFAULT;
             name[strcspn(name, "+")] = '\0';
             used_spp[i] = 0;
             if (!rt_bdpt_strategy_parse(name, &job.path))
@@ -230,14 +235,14 @@ static bool error_table(const char *scene_name, uint64_t spp, uint64_t seed, int
                "MSE %.3g\n",
                width, width, prefix, noise, threads, NROUNDS, BOOK_ERR_SECONDS, book_s, width, width,
                BOOK_MSE);
-        printf("%-14s %6s %9s %12s %16s %13s\n", "strategy", "spp", "seconds", "MSE",
+        printf("%-18s %6s %9s %12s %16s %13s\n", "strategy", "spp", "seconds", "MSE",
                "x_book_equal_err", "worst1%_share");
     } else if (ok) {
         printf("\nerror of %s at %dx%d against %s-{a,b}.pfm (their noise, %.3e, subtracted), %d "
                "threads, median of %d rounds; efficiency = 1 / (MSE x seconds), x_mixture = its "
                "ratio to mixture's\n",
                scene_name, width, width, prefix, noise, threads, NROUNDS);
-        printf("%-14s %6s %9s %12s %11s %10s %13s\n", "strategy", "spp", "seconds", "MSE",
+        printf("%-18s %6s %9s %12s %11s %10s %13s\n", "strategy", "spp", "seconds", "MSE",
                "efficiency", "x_mixture", "worst1%_share");
     }
     double mixture_eff = 0.0;
@@ -249,11 +254,11 @@ static bool error_table(const char *scene_name, uint64_t spp, uint64_t seed, int
             continue;
         double eff = 1.0 / (mse[i] * seconds[i]);
         if (book)
-            printf("%-14s %6llu %9.2f %12.4e %15.1fx %12.1f%%\n", error_rows[i].name,
+            printf("%-18s %6llu %9.2f %12.4e %15.1fx %12.1f%%\n", error_rows[i].name,
                    (unsigned long long)used_spp[i], seconds[i], mse[i], book_s * BOOK_MSE * eff,
                    100.0 * worst[i]);
         else
-            printf("%-14s %6llu %9.2f %12.4e %11.4g %9.2fx %12.1f%%\n", error_rows[i].name,
+            printf("%-18s %6llu %9.2f %12.4e %11.4g %9.2fx %12.1f%%\n", error_rows[i].name,
                    (unsigned long long)used_spp[i], seconds[i], mse[i], eff, eff / mixture_eff,
                    100.0 * worst[i]);
     }

@@ -7,12 +7,13 @@
  * Build: make; run:
  *   build/bin/cornell_box --scene book --spp 100 -o cornell.png
  *   build/bin/cornell_box --scene lambert --strategy uniform -o uniform.pfm
- *   build/bin/cornell_box --scene book --sampler sobol --reference ref.pfm -o sobol.pfm
+ *   build/bin/cornell_box --scene book --sampler stratified --reference ref.pfm -o strat.pfm
  *   build/bin/cornell_box --scene book --strategy bdpt --roulette -o bdpt.png
  * Prints the image's mean linear RGB (standard errors from the per-pixel
  * variances), the paths, ray segments and dropped non-finite samples, and
  * the time. --sampler picks where the uniforms come from
- * (render/sampler.h); --reference REF.pfm compares the image with a
+ * (render/sampler.h; by default the strategy's best,
+ * rt_render_sampler_kind); --reference REF.pfm compares the image with a
  * converged one and prints the error per pixel and channel and the
  * efficiency 1 / (MSE x seconds). Ctrl-C (SIGINT), SIGTERM and SIGHUP write the image rendered so
  * far and exit with 128 + the signal's number (130 for Ctrl-C). The image
@@ -87,7 +88,7 @@ static options parse(int argc, char **argv)
 {
     const char *scenes[N_SCENE_CHOICES + 1];
     scene_choices(scenes);
-    options o = {.scene = "book", .strategy = "mixture", .sampler = "stratified", .gamma = "2",
+    options o = {.scene = "book", .strategy = "mixture", .sampler = "default", .gamma = "2",
                  .out = "cornell.png", .reference = NULL, .width = 600, .depth = 50, .threads = 0,
                  .spp = 100, .seed = 1, .csv = false, .roulette = false};
     const app_opt opts[] = {
@@ -102,8 +103,10 @@ static options parse(int argc, char **argv)
          "sampling strategy: uniform, cosine, light, mixture, mis, lighttrace, bdpt, or bdpt:S,T "
          "(one bidirectional strategy, unweighted) (default mixture)", NULL, 0, 0},
         {"--sampler", APP_CHOICE, &o.sampler,
-         "where the uniforms come from: the pixel position jittered over cells and PCG32 for the rest, "
-         "PCG32 for all, or Owen-scrambled Sobol (default stratified)", rt_sampler_names, 0, 0},
+         "where the uniforms come from: stratified (the pixel position jittered over cells, PCG32 "
+         "for the rest), independent (PCG32 for all), sobol (Owen-scrambled Sobol points), or "
+         "default: the strategy's best at equal error in make bench, sobol for mis, lighttrace "
+         "and bdpt, stratified for the others (default default)", rt_sampler_names, 0, 0},
         {"--reference", APP_STRING, &o.reference,
          "a converged .pfm of the same size: print the pixel RMSE, MSE and 1/(MSE x seconds)", NULL, 0, 0},
         {"--threads", APP_INT, &o.threads, "OpenMP threads, 0 for all, at most 64 per processor (default 0)",

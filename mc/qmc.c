@@ -248,13 +248,35 @@ static double sobol_xor_keyed(uint32_t i, unsigned dim, uint32_t key)
     return (double)(mc_sobol_u32(i, dim) ^ key) * 0x1p-32;
 }
 
+/* Dimension 1's point, reversed (bit r is the point's digit r + 1): its
+ * direction numbers are the rows of Pascal's triangle mod 2 (primitive
+ * polynomial x + 1), so digit r is the XOR over the bits c of i of
+ * C(c, r) mod 2. As polynomials over GF(2) that is i(z) taken to
+ * i(z + 1), a Taylor shift by 1: split into halves i = a + z^h b, with h a
+ * power of two (z + 1)^h = z^h + 1, so the shift adds each block's high
+ * half into its low half, at every block size (the five steps commute).
+ * Five masked XORs for the loop over i's bits in mc_sobol_u32, the same
+ * bits (tests/test_qmc.c compares them). */
+static uint32_t sobol_dim1_reversed(uint32_t i)
+{
+    i ^= (i & 0xffff0000u) >> 16;
+    i ^= (i & 0xff00ff00u) >> 8;
+    i ^= (i & 0xf0f0f0f0u) >> 4;
+    i ^= (i & 0xccccccccu) >> 2;
+    i ^= (i & 0xaaaaaaaau) >> 1;
+    return i;
+}
+
 static double sobol_owen_keyed(uint32_t i, unsigned dim, uint32_t key)
 {
     /* Dimension 0's generator matrix is the identity read from the top
      * bit down, so its point is i reversed, and the scramble's first
-     * reversal gives back i: the same bits without the matrix product. */
+     * reversal gives back i: the same bits without the matrix product.
+     * Dimension 1's reversed point has a closed form. */
     if (dim == 0u)
         return (double)mc_van_der_corput_u32(lk_hash(i, key)) * 0x1p-32;
+    if (dim == 1u)
+        return (double)mc_van_der_corput_u32(lk_hash(sobol_dim1_reversed(i), key)) * 0x1p-32;
     return (double)mc_owen_scramble_u32(mc_sobol_u32(i, dim), key) * 0x1p-32;
 }
 
@@ -305,8 +327,10 @@ uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key)
         i &= w;
         i ^= i >> 5;
     } while (i >= n);
-    /* (i + key) mod n without the 32-bit overflow of i + key. */
-    uint64_t r = (uint64_t)i + key % n;
+    /* (i + key) mod n without the 32-bit overflow of i + key; key mod n
+     * is a mask when n is a power of two (w = n - 1 then), which spares
+     * the renderer's Sobol requests a division each. */
+    uint64_t r = (uint64_t)i + ((n & w) == 0u ? key & w : key % n);
     return (uint32_t)(r >= n ? r - n : r);
 }
 

@@ -50,4 +50,14 @@ static inline double vec3_at(vec3 a, int i) { return i == 0 ? a.x : (i == 1 ? a.
 static inline vec3 vec3_min(vec3 a, vec3 b) { return vec3_make(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
 static inline vec3 vec3_max(vec3 a, vec3 b) { return vec3_make(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
 
+/* The largest coordinate of v, as fmax(v.x, fmax(v.y, v.z)) gives it (a
+ * NaN coordinate is passed over, NaN only when all are), in comparisons
+ * that stay inline where fmax is a library call (gcc keeps fmax's NaN
+ * rule out of line): Russian roulette takes it at every path vertex. */
+static inline double vec3_max_component(vec3 v)
+{
+    double m = v.y > v.z || v.z != v.z ? v.y : v.z;
+    return v.x > m || m != m ? v.x : m;
+}
+
 #endif /* MC_VEC3_H */

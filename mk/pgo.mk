@@ -5,9 +5,9 @@
 # and renders a few small images (tools/pgo_train.sh); the library objects
 # are then compiled a second time, into $(B)/obj-pgo/, with its counts: gcc
 # lays out the hot paths and inlines by them. Only the renderer's programs
-# (cornell_box, bench_render) link those profiled archives; the libraries
-# every other program and every test links are the plain ones of
-# $(B)/obj/, which wait for no training. The renderer's arithmetic is
+# (cornell_box, bench_render, bench_convergence) link those profiled
+# archives; the libraries every other program and every test links are the
+# plain ones of $(B)/obj/, which wait for no training. The renderer's arithmetic is
 # unchanged by the profile, so are its images (docs/performance.md has the
 # speed-up measured). -fprofile-partial-training keeps code the training
 # never ran optimized as without a profile, not as cold.
@@ -57,7 +57,7 @@ endef
 $(foreach l,$(LAYERS),$(eval $(call pgo_layer_rule,$(l))))
 
 PGO_LIBFILES := $(foreach l,$(LAYERS),$(B)/lib-pgo/lib$(l).a)
-RENDER_PROGRAMS := $(B)/bin/cornell_box $(B)/bench/bench_render
+RENDER_PROGRAMS := $(B)/bin/cornell_box $(B)/bench/bench_render $(B)/bench/bench_convergence
 $(RENDER_PROGRAMS): $(PGO_LIBFILES)
 $(RENDER_PROGRAMS): LINK_LAYERS = $(PGO_LIBFILES)
 endif

@@ -12,7 +12,7 @@
 rt_bdpt_ctx rt_bdpt_ctx_make(const rt_scene *scene, const rt_path_settings *ps,
                              const rt_camera *camera)
 {
-    rt_bdpt_ctx c = {scene, ps, camera, vec3_make(0.0, 0.0, 1.0), 0.0};
+    rt_bdpt_ctx c = {scene, ps, camera, vec3_make(0.0, 0.0, 1.0), 0.0, false, NULL};
     /* The centre of the image plane at distance 1 is the view axis. */
     vec3 centre = vec3_add(camera->corner,
                            vec3_add(vec3_scale(camera->du, 0.5 * (double)camera->width),
@@ -71,6 +71,9 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
         L = rt_bdpt_through_estimate(c, &cam[jd], jd, aux, segments);
     if (all && seen_here)
         L = vec3_add(L, rt_bdpt_seen_first(c, camera_ray, cam, nc, depth, aux, segments));
+    /* The joins and splats queue their shadow rays; each adds its value
+     * to L or to its pixel when its ray is found clear, in the order made. */
+    rt_bdpt_shadows q = rt_bdpt_shadows_begin(c, L, splats, segments);
     for (int t = 1; t <= nc; t++)
         for (int s = 0; s <= nl; s++) {
             if (s + t < 2 || s + t - 1 > depth || (t == 1 && s == 0))
@@ -83,15 +86,14 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
                 continue;
             if (t == 1) {
                 rt_bdpt_splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, all ? aux : NULL,
-                                        splats, segments);
+                                        &q);
                 continue;
             }
             if (all && s == 0 && rt_bdpt_estimated_apart(ps, cam, t, jd))
                 continue; /* rt_bdpt_seen_sample's or rt_bdpt_through_estimate's */
-            L = vec3_add(L, rt_bdpt_join(c, all ? &sp : NULL, light, s, cam, t, all ? aux : NULL,
-                                         segments));
+            rt_bdpt_join(c, all ? &sp : NULL, light, s, cam, t, all ? aux : NULL, &q);
         }
-    return L;
+    return rt_bdpt_shadows_end(c, &q);
 }
 /* END SNIPPET bdpt_strategies */
 

@@ -107,6 +107,15 @@ typedef struct rt_bdpt_ctx {
     const rt_camera *camera;
     vec3 forward;      /* unit view axis */
     double pixel_area; /* A_pix on the plane at distance 1 */
+    /* False in a render: shadow rays are traced four at a time
+     * (rt_scene_hit4). True traces each alone when it is made, the
+     * reference that gives the same image bit for bit
+     * (rt_render_job.one_path_at_a_time sets it). */
+    bool one_ray_at_a_time;
+    /* NULL in a render. The tests point it at a record that every join
+     * fills: the joins' weights from running sums against the same
+     * weights recomputed over the whole path (render/bdpt_internal.h). */
+    struct rt_bdpt_weight_audit *audit;
 } rt_bdpt_ctx;
 
 /* The context of a render of scene through camera with settings ps. */

@@ -27,6 +27,7 @@
 #include <stdint.h>
 
 #include "render/bdpt.h"
+#include "render/leaf4.h"
 
 /* The unit direction from the camera to p (*dir) and its cosine with the
  * view axis (*cos_theta); false behind the camera. */
@@ -63,11 +64,22 @@ double rt_bdpt_origin_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x);
  * the path arrived from), remapped: lf[i], lr[i] are pl and pc of light
  * vertex i within its subpath (pc from vertex i + 1), cf[j], cr[j] pc and
  * pl of camera vertex j (pl from vertex j + 1); jl, jc whether the vertex
- * can be joined. pl and pc as in rt_bdpt_mis_weight. */
+ * can be joined. pl and pc as in rt_bdpt_mis_weight.
+ *
+ * And the running sums of the power heuristic's denominator, one per
+ * vertex, that make a join's weight O(1) (the recursive form of the
+ * weights that vertex connection and merging renderers use): la[i] is
+ * the sum over the strategies r <= i that make light vertices 0..r-1 from
+ * the light (ok ones only) of prod_{k=r..i} (lr[k] / lf[k])^2; ce[j] the
+ * sum over the strategies with t' = 1..j camera vertices of
+ * prod_{m=t'..j} (cr[m] / cf[m])^2; ce_any[j] whether any of those can
+ * join. */
 typedef struct rt_bdpt_subpath_pdfs {
     double lf[RT_BDPT_MAX_DEPTH], lr[RT_BDPT_MAX_DEPTH];
     double cf[RT_BDPT_MAX_DEPTH + 1], cr[RT_BDPT_MAX_DEPTH + 1];
     bool jl[RT_BDPT_MAX_DEPTH], jc[RT_BDPT_MAX_DEPTH + 1];
+    double la[RT_BDPT_MAX_DEPTH], ce[RT_BDPT_MAX_DEPTH + 1];
+    bool ce_any[RT_BDPT_MAX_DEPTH + 1];
 } rt_bdpt_subpath_pdfs;
 
 /* Fills *sp for the light subpath light[0..nl) and the camera subpath
@@ -77,27 +89,79 @@ void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int n
 
 /* rt_bdpt_mis_weight of strategy (s, t), the path light[0..s) joined to
  * cam[0..t) reversed, from the cached densities sp and the few that the
- * join changes: in O(s + t). */
+ * join changes, the path's densities gathered and summed again: in
+ * O(s + t). The reference for rt_bdpt_join_weight_running. */
 double rt_bdpt_join_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
                            const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t);
 
+/* The same weight in O(1), from the running sums of sp and the two
+ * densities the join changes; what the joins use. It equals
+ * rt_bdpt_join_weight to rounding (the products are associated
+ * differently): tests/test_render_values.c holds every join of renders of
+ * both scenes to 1e-12, the splat's scale on paths of three vertices
+ * included. Paths of two vertices (the lamp seen directly, whose rule
+ * gives it all to s = 0) and the negative control neg.mis_double go to
+ * rt_bdpt_join_weight, which is O(1) there too. With c->audit set, both
+ * are computed and the record updated. */
+double rt_bdpt_join_weight_running(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
+                                   const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam,
+                                   int t);
+
+/* The record of c->audit: joins weighed, and the largest relative
+ * difference |running - reference| / reference (absolute where the
+ * reference is 0). */
+typedef struct rt_bdpt_weight_audit {
+    uint64_t joins;
+    double worst;
+} rt_bdpt_weight_audit;
+
 /* --- the joins (bdpt_join.c) ------------------------------------------ */
+
+/* The joins of one sample and their shadow rays, traced four at a time
+ * through the scene's four-ray test (rt_scene_hit4) once four are
+ * waiting, or one by one with c->one_ray_at_a_time. Each entry adds its
+ * value, if its ray is clear (or it has none), to the sample's sum L (a
+ * join) or to a pixel's splat sums (a splat), and the entries are added in
+ * the order they were made: the same sums, bit for bit, as tracing each
+ * ray when its join is made. A ray clear over (tmin, tmax) is one whose
+ * nearest hit, sought out to the largest tmax of the four, is not nearer
+ * than tmax: the same answer as rt_scene_hit's. */
+#define RT_BDPT_QUEUE 16
+typedef struct rt_bdpt_shadows {
+    rt_ray r[RT_LANES];
+    double tmax[RT_LANES];
+    int n_rays;                 /* rays waiting, <= RT_LANES */
+    int n;                      /* entries waiting, <= RT_BDPT_QUEUE */
+    vec3 v[RT_BDPT_QUEUE];      /* what each entry adds */
+    int ray[RT_BDPT_QUEUE];     /* its ray in r, -1 for none */
+    size_t px[RT_BDPT_QUEUE];   /* a splat's pixel; SIZE_MAX for a join */
+    vec3 L;
+    rt_splats *splats;
+    uint64_t *segments;
+} rt_bdpt_shadows;
+
+/* An empty queue adding to L and splats, counting its rays in
+ * *segments. */
+rt_bdpt_shadows rt_bdpt_shadows_begin(const rt_bdpt_ctx *c, vec3 L, rt_splats *splats,
+                                      uint64_t *segments);
+
+/* Traces what is waiting and returns the sum L. */
+vec3 rt_bdpt_shadows_end(const rt_bdpt_ctx *c, rt_bdpt_shadows *q);
 
 /* The contribution of strategy (s, t) with t >= 2 (s = 0: the camera
  * subpath's own hit on an emitter), weighted by the cached densities sp
  * (NULL: unweighted), with roulette on its shadow ray when aux is given
- * (RT_BDPT_JOIN_FLOOR). Adds the rays traced to *segments. */
-vec3 rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt_bdpt_vertex *light,
-                  int s, const rt_bdpt_vertex *cam, int t, mc_rng *aux, uint64_t *segments);
+ * (RT_BDPT_JOIN_FLOOR), queued on q to add to its sum. */
+void rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt_bdpt_vertex *light,
+                  int s, const rt_bdpt_vertex *cam, int t, mc_rng *aux, rt_bdpt_shadows *q);
 
 /* Strategy (s, 1), s >= 1: the light subpath's end seen by the camera
  * vertex cam0, times the camera importance (and the weight from sp, NULL:
- * unweighted), added to splats' sums of the pixel j it is seen
- * in; roulette on the shadow ray when aux is given. Adds the rays traced
- * to *segments. */
+ * unweighted), queued on q to add to the splat sums of the pixel it is
+ * seen in; roulette on the shadow ray when aux is given. */
 void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s,
                              const rt_bdpt_vertex *cam0, const rt_bdpt_subpath_pdfs *sp,
-                             mc_rng *aux, rt_splats *splats, uint64_t *segments);
+                             mc_rng *aux, rt_bdpt_shadows *q);
 
 /* --- the families estimated apart (bdpt_seen.c) ----------------------- */
 

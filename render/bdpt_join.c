@@ -3,6 +3,7 @@
  * a light vertex seen by the camera onto its pixel (t = 1, light
  * tracing); Veach's thesis, 1997, 10.2; this book's #ch-caustic. */
 #include <math.h>
+#include <stdint.h>
 
 #include "mc/constants.h"
 #include "render/bdpt_internal.h"
@@ -23,14 +24,89 @@ static vec3 end_factor(const rt_bdpt_vertex *x, vec3 to)
     return vec3_scale(x->m->albedo, MC_INV_PI);
 }
 
-/* True when nothing lies between the points a and b. */
-static bool visible(const rt_scene *s, vec3 a, vec3 b, uint64_t *segments)
+/* --- the queue of shadow rays ----------------------------------------- */
+
+rt_bdpt_shadows rt_bdpt_shadows_begin(const rt_bdpt_ctx *c, vec3 L, rt_splats *splats,
+                                      uint64_t *segments)
 {
-    vec3 d = vec3_sub(b, a);
-    double dist = vec3_length(d);
-    rt_hit h;
-    ++*segments;
-    return !rt_scene_hit(s, rt_ray_make(a, vec3_scale(d, 1.0 / dist)), dist - rt_scene_t_min(s), &h);
+    (void)c;
+    rt_bdpt_shadows q;
+    q.n_rays = q.n = 0;
+    q.L = L;
+    q.splats = splats;
+    q.segments = segments;
+    return q;
+}
+
+/* Traces the waiting rays (a batch of fewer than four repeats its first)
+ * and adds every waiting entry whose ray is clear, in order. */
+static void flush(const rt_bdpt_ctx *c, rt_bdpt_shadows *q)
+{
+    unsigned blocked = 0u;
+    if (q->n_rays > 0) {
+        double far = q->tmax[0];
+        for (int k = 1; k < q->n_rays; k++)
+            far = q->tmax[k] > far ? q->tmax[k] : far;
+        for (int k = q->n_rays; k < RT_LANES; k++) {
+            q->r[k] = q->r[0];
+            q->tmax[k] = q->tmax[0];
+        }
+        rt_hit h[RT_LANES];
+        unsigned hit = rt_scene_hit4(c->scene, q->r, far, h);
+        for (int k = 0; k < q->n_rays; k++)
+            if ((hit >> k) & 1u && h[k].t < q->tmax[k])
+                blocked |= 1u << k;
+    }
+    for (int i = 0; i < q->n; i++) {
+        if (q->ray[i] >= 0 && (blocked >> q->ray[i]) & 1u)
+            continue;
+        vec3 v = q->v[i];
+        if (q->px[i] == SIZE_MAX)
+            q->L = vec3_add(q->L, v);
+        /* A non-finite splat would spoil a pixel for good:
+         * rt_splats_add_rgb leaves it out (the factors are finite for
+         * any path that gets here). */
+        else
+            (void)rt_splats_add_rgb(q->splats, q->px[i], v.x, v.y, v.z);
+    }
+    q->n_rays = q->n = 0;
+}
+
+/* Queues v, to add to L (px = SIZE_MAX) or to pixel px's splat sums, if
+ * nothing lies between the points a and b (a == b: no ray, always). */
+static void queue(const rt_bdpt_ctx *c, rt_bdpt_shadows *q, vec3 v, size_t px, const vec3 *a,
+                  const vec3 *b)
+{
+    int ray = -1;
+    if (a) {
+        vec3 d = vec3_sub(*b, *a);
+        double dist = vec3_length(d);
+        ray = q->n_rays++;
+        q->r[ray] = rt_ray_make(*a, vec3_scale(d, 1.0 / dist));
+        q->tmax[ray] = dist - rt_scene_t_min(c->scene);
+        ++*q->segments;
+    }
+    q->v[q->n] = v;
+    q->px[q->n] = px;
+    q->ray[q->n++] = ray;
+    if (q->n_rays == RT_LANES || q->n == RT_BDPT_QUEUE || (ray >= 0 && c->one_ray_at_a_time)) {
+        if (c->one_ray_at_a_time && ray >= 0) {
+            /* The reference: this ray alone, through rt_scene_hit. */
+            rt_hit h;
+            bool clear = !rt_scene_hit(c->scene, q->r[ray], q->tmax[ray], &h);
+            q->n_rays = 0;
+            q->ray[q->n - 1] = -1;
+            if (!clear)
+                q->n--;
+        }
+        flush(c, q);
+    }
+}
+
+vec3 rt_bdpt_shadows_end(const rt_bdpt_ctx *c, rt_bdpt_shadows *q)
+{
+    flush(c, q);
+    return q->L;
 }
 
 /* Russian roulette on a join whose value, if nothing is in the way,
@@ -41,7 +117,7 @@ static bool visible(const rt_scene *s, vec3 a, vec3 b, uint64_t *segments)
  * the estimate is unchanged in expectation. */
 static double join_roulette(vec3 v, double scale, mc_rng *aux)
 {
-    double worth = scale * fmax(v.x, fmax(v.y, v.z));
+    double worth = scale * vec3_max_component(v);
     if (!aux || !(worth < RT_BDPT_JOIN_FLOOR))
         return 1.0;
     double q = worth / RT_BDPT_JOIN_FLOOR;
@@ -51,33 +127,35 @@ static double join_roulette(vec3 v, double scale, mc_rng *aux)
 /* --- strategies (s, t >= 2): a shadow ray between the two ends -------- */
 
 /* BEGIN SNIPPET bdpt_join */
-vec3 rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt_bdpt_vertex *light,
-                  int s, const rt_bdpt_vertex *cam, int t, mc_rng *aux, uint64_t *segments)
+void rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt_bdpt_vertex *light,
+                  int s, const rt_bdpt_vertex *cam, int t, mc_rng *aux, rt_bdpt_shadows *q)
 {
     const rt_bdpt_vertex *z = &cam[t - 1];
-    vec3 zero = vec3_make(0.0, 0.0, 0.0), v;
+    vec3 v;
     if (s == 0) {
         if (z->kind != RT_BDPT_SURFACE || !z->front_face || is_black(z->m->emission))
-            return zero;
+            return;
         v = vec3_mul(z->beta, z->m->emission);
-        return sp ? vec3_scale(v, rt_bdpt_join_weight(c, sp, light, s, cam, t)) : v;
+        if (sp)
+            v = vec3_scale(v, rt_bdpt_join_weight_running(c, sp, light, s, cam, t));
+        queue(c, q, v, SIZE_MAX, NULL, NULL);
+        return;
     }
     const rt_bdpt_vertex *y = &light[s - 1];
     vec3 fy = end_factor(y, z->p), fz = end_factor(z, y->p);
     if (is_black(fy) || is_black(fz))
-        return zero;
+        return;
     vec3 d = vec3_sub(z->p, y->p);
     double dist_sq = vec3_length_sq(d);
     double g = fabs(vec3_dot(y->ng, d)) * fabs(vec3_dot(z->ng, d)) / (dist_sq * dist_sq);
     if (!(g > 0.0))
-        return zero;
+        return;
     v = vec3_scale(vec3_mul(vec3_mul(y->beta, fy), vec3_mul(z->beta, fz)), g);
     if (sp)
-        v = vec3_scale(v, rt_bdpt_join_weight(c, sp, light, s, cam, t));
+        v = vec3_scale(v, rt_bdpt_join_weight_running(c, sp, light, s, cam, t));
     double f = join_roulette(v, 1.0, aux);
-    if (f == 0.0 || !visible(c->scene, y->p, z->p, segments))
-        return zero;
-    return vec3_scale(v, f);
+    if (f != 0.0)
+        queue(c, q, vec3_scale(v, f), SIZE_MAX, &y->p, &z->p);
 }
 /* END SNIPPET bdpt_join */
 
@@ -86,14 +164,14 @@ vec3 rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt
 /* BEGIN SNIPPET bdpt_splat */
 void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int s,
                              const rt_bdpt_vertex *cam0, const rt_bdpt_subpath_pdfs *sp,
-                             mc_rng *aux, rt_splats *splats, uint64_t *segments)
+                             mc_rng *aux, rt_bdpt_shadows *q)
 {
     const rt_bdpt_vertex *y = &light[s - 1];
     size_t px;
     double we;
     if (!rt_bdpt_camera_importance(c, y->p, &px, &we))
         return;
-    rt_splats_prefetch(splats, px);
+    rt_splats_prefetch(q->splats, px);
     vec3 fy = end_factor(y, cam0->p);
     if (is_black(fy))
         return;
@@ -104,17 +182,12 @@ void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, 
         return;
     vec3 v = vec3_scale(vec3_mul(y->beta, fy), g * we);
     if (sp)
-        v = vec3_scale(v, rt_bdpt_join_weight(c, sp, light, s, cam0, 1));
+        v = vec3_scale(v, rt_bdpt_join_weight_running(c, sp, light, s, cam0, 1));
     /* A splat is divided by the number of light subpaths, one per pixel
      * sample: to a pixel sample it is worth v over the pixel count. */
     double npix = (double)c->camera->width * (double)c->camera->height;
     double f = join_roulette(v, 1.0 / npix, aux);
-    if (f == 0.0 || !visible(c->scene, y->p, cam0->p, segments))
-        return;
-    v = vec3_scale(v, f);
-    /* A non-finite splat would spoil a pixel for good: rt_splats_add_rgb
-     * leaves it out (the factors above are finite for any path that gets
-     * here). */
-    (void)rt_splats_add_rgb(splats, px, v.x, v.y, v.z);
+    if (f != 0.0)
+        queue(c, q, vec3_scale(v, f), px, &y->p, &cam0->p);
 }
 /* END SNIPPET bdpt_splat */

@@ -179,6 +179,26 @@ void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int n
         sp->cr[j] = j + 1 < nc ? area_pdf(c, &cam[j + 1], AS_LIGHT, &cam[j]) : 1.0;
         sp->jc[j] = j == 0 || joinable(c, &cam[j], 1, 3);
     }
+    /* The running sums. Strategy r joins x[r-1] and x[r], so on the light
+     * side it can join when light vertices r-1 and r can; r = 0 (the
+     * camera subpath ending on the lamp) is left out when the light
+     * subpath's second vertex is specular, weight_from's rule for x[1]
+     * (every join that reads la has s >= 2, where light[1] is x[1]). */
+    for (int i = 0; i < nl; i++) {
+        double q = sp->lr[i] / sp->lf[i];
+        bool ok = i == 0 ? !(nl >= 2 && light[1].delta) : sp->jl[i - 1] && sp->jl[i];
+        sp->la[i] = q * q * ((ok ? 1.0 : 0.0) + (i > 0 ? sp->la[i - 1] : 0.0));
+    }
+    /* On the camera side the strategy with t' camera vertices joins camera
+     * vertices t' and t' - 1. */
+    sp->ce[0] = 0.0;
+    sp->ce_any[0] = false;
+    for (int j = 1; j < nc; j++) {
+        double q = sp->cr[j] / sp->cf[j];
+        bool ok = sp->jc[j] && sp->jc[j - 1];
+        sp->ce[j] = q * q * ((ok ? 1.0 : 0.0) + sp->ce[j - 1]);
+        sp->ce_any[j] = ok || sp->ce_any[j - 1];
+    }
 }
 
 /* The path is light[0..s) then cam[0..t) reversed: x[i] = light[i] for
@@ -218,4 +238,65 @@ double rt_bdpt_join_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
      * one before it. */
     const rt_bdpt_vertex *x1 = s >= 2 ? &light[1] : s == 1 ? z : &cam[t - 2];
     return weight_from(pl, pc, ok, n, s, c->ps->neg.mis_double - 1, n > 2 && x1->delta);
+}
+
+/* The ratios beside the join are the only ones the join changes: the
+ * light side's sum is (pc[s-1] / pl[s-1])^2 times (strategy s - 1's term
+ * plus la[s-2]), the camera side's (pl[s] / pc[s])^2 times (strategy
+ * s + 1's term plus ce[t-2]); weight_from's loops, unrolled into the
+ * running sums. With s = 0 the first two camera-side densities are the
+ * lamp's (its area density, then cosine emission), not cached ones. On a
+ * path of three vertices the splat's term (t' = 1) carries c^2 = splat
+ * (weight_from's scale); on longer ones c = 1, and no running sum holds a
+ * scaled term. */
+/* BEGIN SNIPPET bdpt_weight_running */
+static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
+                             const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t)
+{
+    const rt_bdpt_vertex *z = &cam[t - 1];
+    double splat = s + t == 3 ? RT_BDPT_DIRECT_SPLAT_SCALE * RT_BDPT_DIRECT_SPLAT_SCALE : 1.0;
+    if (s == 0) {
+        double origin = rt_bdpt_origin_pdf(c, z);
+        if (!(origin > 0.0))
+            return 0.0;
+        double q1 = origin / sp->cf[t - 1];
+        double q2 = area_pdf(c, z, AS_ORIGIN, &cam[t - 2]) / sp->cf[t - 2];
+        bool ok1 = sp->jc[t - 2], ok2 = sp->jc[t - 2] && sp->jc[t - 3];
+        double sum = q1 * q1 * ((ok1 ? 1.0 : 0.0) + q2 * q2 * ((ok2 ? splat : 0.0) + sp->ce[t - 3]));
+        /* weight_from's rule for light reached through a specular x[1]. */
+        if (cam[t - 2].delta && (ok1 || ok2 || sp->ce_any[t - 3]))
+            return 0.0;
+        return 1.0 / (1.0 + sum);
+    }
+    const rt_bdpt_vertex *y = &light[s - 1];
+    if (!(sp->jl[s - 1] && sp->jc[t - 1]))
+        return 0.0;
+    double ql = area_pdf(c, z, AS_CAMERA, y) / sp->lf[s - 1];
+    bool ok_l = s == 1 || (sp->jl[s - 2] && sp->jl[s - 1]);
+    double sum = ql * ql * ((ok_l ? 1.0 : 0.0) + (s >= 2 ? sp->la[s - 2] : 0.0));
+    if (t >= 2) {
+        double qc = area_pdf(c, y, s == 1 ? AS_ORIGIN : AS_LIGHT, z) / sp->cf[t - 1];
+        bool ok_c = sp->jc[t - 1] && sp->jc[t - 2];
+        sum += qc * qc * ((ok_c ? (t == 2 ? splat : 1.0) : 0.0) + sp->ce[t - 2]);
+    }
+    double own = t == 1 ? splat : 1.0;
+    return own / (own + sum);
+}
+/* END SNIPPET bdpt_weight_running */
+
+double rt_bdpt_join_weight_running(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
+                                   const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam,
+                                   int t)
+{
+    if (s + t <= 2 || c->ps->neg.mis_double)
+        return rt_bdpt_join_weight(c, sp, light, s, cam, t);
+    double w = running_weight(c, sp, light, s, cam, t);
+    if (c->audit) {
+        double ref = rt_bdpt_join_weight(c, sp, light, s, cam, t);
+        double diff = ref != 0.0 ? fabs(w - ref) / ref : fabs(w);
+        c->audit->joins++;
+        if (!(diff <= c->audit->worst)) /* a NaN is kept too */
+            c->audit->worst = diff;
+    }
+    return w;
 }

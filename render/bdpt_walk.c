@@ -75,7 +75,8 @@ int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, i
          * path alone) still sum to 1. It starts after RT_BDPT_RR_START
          * segments, not the path tracer's rr_start. */
         if (ps->russian_roulette && k + 1 >= RT_BDPT_RR_START) {
-            double q = fmax(beta.x / start.x, fmax(beta.y / start.y, beta.z / start.z));
+            double q = vec3_max_component(
+                vec3_make(beta.x / start.x, beta.y / start.y, beta.z / start.z));
             q = q < 0.95 ? q : 0.95;
             if (!(q > 0.0) || rt_sampler_1d(sampler) >= q)
                 break;

@@ -2,7 +2,8 @@
  * laid out four to a vector, and the tests that read them.
  *
  * A small scene (the Cornell box of chapters 4-10 of "Ray Tracing: The Rest
- * of Your Life": twelve quads and a sphere) is a single BVH leaf. Its quads
+ * of Your Life": twelve quads and a sphere) is a single BVH leaf, or is
+ * treated as one (RT_LEAF_LANES_MAX_PRIMS). Its quads
  * are copied here by kind, every field repeated in four lanes, so that
  * each primitive is tested against four rays with plain vector loads: four
  * independent computations where one ray's tests are a dependent chain. A
@@ -32,6 +33,14 @@
 
 /* Rays tested together, one per vector lane. */
 #define RT_LANES 4
+
+/* A scene of at most this many primitives is laid out in lanes whole, even
+ * where the BVH splits it: testing every quad four at a time costs less
+ * than the BVH's walk for a room with two boxes in it (the all-diffuse
+ * Cornell box, 18 quads: a bdpt render 1.3x as fast, a mixture render
+ * 2.7x, the same images; docs/performance.md). The BVH serves larger
+ * scenes. */
+#define RT_LEAF_LANES_MAX_PRIMS 32
 
 /* An axis-aligned quad (a wall, the light, the top of an unturned box):
  * normal along axis k, the dual edge vectors along i and j. */
@@ -125,7 +134,8 @@ unsigned rt_leaf_lanes_hit(const rt_leaf_tests *t, const rt_leaf_lanes *ll, cons
 
 /* rt_bvh_hit for one ray r: the same answer, the distance and hit record
  * bit for bit, and on an exact tie the same primitive (the first in
- * prims). With a test t->hit1 and a leaf layout ll (may be NULL), r is
+ * prims) when the BVH is one leaf (a BVH that splits may report the other
+ * one of a tie). With a test t->hit1 and a leaf layout ll (may be NULL), r is
  * tested against the four quads of each of ll's packets in vector lanes,
  * then against the spheres; otherwise this is rt_bvh_hit. */
 bool rt_leaf_lanes_hit1(const rt_leaf_tests *t, const rt_leaf_lanes *ll, const rt_bvh *bvh,

@@ -13,11 +13,12 @@
  *   the pixel.
  * - Each pixel draws from its own stream mc_rng_derive(seed, pixel index),
  *   and each pixel's samples are added in a fixed order: the image is
- *   bit-identical for any number of threads. That is the default sampler,
- *   stratified; rt_render_job.sampler may instead draw every uniform from
+ *   bit-identical for any number of threads. That is the stratified
+ *   sampler; rt_render_job.sampler may instead draw every uniform from
  *   the stream (independent) or from Owen-scrambled Sobol points hashed
  *   from (seed, pixel, dimension) (sobol), which depend on the sample's
- *   index alone and are as reproducible (render/sampler.h).
+ *   index alone and are as reproducible (render/sampler.h); the default
+ *   is the strategy's best (rt_render_sampler_kind).
  * - The samples are taken in passes over the whole image, so a render
  *   stopped early (the cancel flag, checked between image rows) still holds
  *   a complete picture in which each pixel's mean is unbiased: the rows
@@ -72,11 +73,13 @@ typedef struct rt_render_job {
     void *progress_ctx;
     const atomic_int *cancel; /* may be NULL; nonzero stops the render */
     /* The book's integrator (rt_path_steppable) traces four paths
-     * together, one pixel per lane (render/fast/rows.h); true traces one path
-     * at a time instead: the same image bit for bit, kept as the
-     * reference the tests compare against. */
+     * together, one pixel per lane (render/fast/rows.h), and the
+     * strategies that splat trace their shadow rays four at a time
+     * (render/bdpt_internal.h); true traces one path, one shadow ray, at a
+     * time instead: the same image bit for bit, kept as the reference the
+     * tests compare against. */
     bool one_path_at_a_time;
-    rt_sampler_kind sampler; /* default stratified; sobol needs spp < 2^32 */
+    rt_sampler_kind sampler; /* zero: stratified; sobol needs spp < 2^32 */
 } rt_render_job;
 
 typedef struct rt_render_stats {
@@ -88,9 +91,15 @@ typedef struct rt_render_stats {
 } rt_render_stats;
 
 /* A job with the book's defaults for the scene and camera: strategy
- * mixture, max depth 50, 100 spp, seed 1, all threads, the stratified
- * sampler. */
+ * mixture, max depth 50, 100 spp, seed 1, all threads, the strategy's
+ * default sampler (RT_SAMPLER_DEFAULT). */
 rt_render_job rt_render_job_default(const rt_scene *scene, rt_camera camera);
+
+/* The sampler the job renders with: job->sampler, or for
+ * RT_SAMPLER_DEFAULT the strategy's, the one `make bench` measures best
+ * at equal error: sobol for bdpt, mis and lighttrace, stratified for
+ * uniform, cosine, light and mixture (and wherever spp >= 2^32). */
+rt_sampler_kind rt_render_sampler_kind(const rt_render_job *job);
 
 /* Clears img and renders job into it; *stats (may be NULL) receives the
  * totals. Returns 0 when complete, 1 when cancelled (img then holds

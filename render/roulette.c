@@ -14,7 +14,7 @@
  * that followed it would divide the lamp's radiance by a small q. */
 static double survival(vec3 beta_albedo)
 {
-    double q = fmax(beta_albedo.x, fmax(beta_albedo.y, beta_albedo.z));
+    double q = vec3_max_component(beta_albedo);
     return q < 0.95 ? q : 0.95;
 }
 

@@ -7,7 +7,7 @@
 #include "mc/qmc.h"
 #include "render/names.h"
 
-const char *const rt_sampler_names[] = {"stratified", "independent", "sobol", NULL};
+const char *const rt_sampler_names[] = {"stratified", "independent", "sobol", "default", NULL};
 
 bool rt_sampler_parse(const char *name, rt_sampler_kind *out)
 {
@@ -20,7 +20,7 @@ bool rt_sampler_parse(const char *name, rt_sampler_kind *out)
 
 const char *rt_sampler_name(rt_sampler_kind kind)
 {
-    return (unsigned)kind <= (unsigned)RT_SAMPLER_SOBOL ? rt_sampler_names[kind] : "?";
+    return (unsigned)kind <= (unsigned)RT_SAMPLER_DEFAULT ? rt_sampler_names[kind] : "?";
 }
 
 rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, mc_rng rng,

@@ -5,8 +5,7 @@
  * kinds:
  *   RT_SAMPLER_STRATIFIED  the pixel position jittered over a grid of cells
  *                          (render/jitter.h, this book's #ch-cornell),
- *                          every other draw from the pixel's PCG32 stream;
- *                          the default
+ *                          every other draw from the pixel's PCG32 stream
  *   RT_SAMPLER_INDEPENDENT every draw, the pixel position too, from the
  *                          pixel's PCG32 stream
  *   RT_SAMPLER_SOBOL       Owen-scrambled Sobol points, padded as pbrt-v4's
@@ -34,6 +33,9 @@
  * keeps the same dimension for the same decision in most samples (the
  * first bounce's light choice is the same dimension in every sample),
  * which is where a low-discrepancy set can beat independent points.
+ *
+ * A fourth kind, RT_SAMPLER_DEFAULT, names no source of its own: it is
+ * the strategy's best measured one (render/render.h).
  */
 #ifndef RT_SAMPLER_H
 #define RT_SAMPLER_H
@@ -44,13 +46,18 @@
 #include "mc/rng.h"
 
 typedef enum rt_sampler_kind {
-    RT_SAMPLER_STRATIFIED, /* 0, so that a zeroed job keeps the default */
+    RT_SAMPLER_STRATIFIED, /* 0: a zeroed job is stratified */
     RT_SAMPLER_INDEPENDENT,
-    RT_SAMPLER_SOBOL
+    RT_SAMPLER_SOBOL,
+    /* The strategy's own, the one `make bench` measures best for it
+     * (rt_render_sampler_kind, render/render.h); what
+     * rt_render_job_default and the programs' --sampler default give. */
+    RT_SAMPLER_DEFAULT
 } rt_sampler_kind;
 
-/* The names "stratified", "independent", "sobol" in rt_sampler_kind
- * order, NULL-terminated (for option tables and help text). */
+/* The names "stratified", "independent", "sobol", "default" in
+ * rt_sampler_kind order, NULL-terminated (for option tables and help
+ * text). */
 extern const char *const rt_sampler_names[];
 
 /* The kind named `name`; false for anything else. */
@@ -88,9 +95,10 @@ static inline rt_sampler rt_sampler_from_rng(mc_rng rng)
     return s;
 }
 
-/* The sampler of pixel `pixel` of a render of kind `kind` with `seed`
- * and spp samples per pixel (sobol: 1 <= spp < 2^32), continuing the
- * pixel's PCG32 stream rng. */
+/* The sampler of pixel `pixel` of a render of kind `kind` (not
+ * RT_SAMPLER_DEFAULT, which the job resolves first) with `seed` and spp
+ * samples per pixel (sobol: 1 <= spp < 2^32), continuing the pixel's
+ * PCG32 stream rng. */
 rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, mc_rng rng,
                             uint64_t pixel);
 

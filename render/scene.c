@@ -311,8 +311,11 @@ int rt_scene_build(rt_scene *s)
         !materials_valid(s, s->lights, s->n_lights) ||
         rt_bvh_build(&s->bvh, s->prims, s->n_prims) != 0)
         return -1;
-    /* One leaf (a small scene): laid out for the four-wide leaf tests. */
-    if (s->bvh.nodes[0].count > 0 && !(s->lanes = rt_leaf_lanes_create(s->prims, s->n_prims)))
+    /* A small scene, one leaf or up to RT_LEAF_LANES_MAX_PRIMS primitives:
+     * laid out for the four-wide leaf tests, which then answer every ray
+     * (render/leaf4.h says why the answers are the BVH's). */
+    if ((s->bvh.nodes[0].count > 0 || s->n_prims <= RT_LEAF_LANES_MAX_PRIMS) &&
+        !(s->lanes = rt_leaf_lanes_create(s->prims, s->n_prims)))
         return -1;
     for (int i = 0; i < s->n_lights; i++) {
         vec3 e = s->materials[s->lights[i].material].emission;

@@ -3,6 +3,9 @@
  * code was once left-handed), exact near both poles where the classic
  * constructions lose precision or divide by zero, and to_world / to_local
  * inverse to each other. A left-handed basis must fail the same check.
+ * Also vec3_max_component (mc/vec3.h), which roulette takes at every
+ * path vertex, against fmax on every order of values with ties, zeros of
+ * both signs, infinities and NaNs.
  * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 6
  * "Ortho-normal Bases"; this book's #ch-onb.
  */
@@ -126,12 +129,28 @@ static void test_onb_negative_control(void **state)
     assert_true(negctl_record(t, "ONB left-handed", "orthonormality/handedness", caught == tried));
 }
 
+/* vec3_max_component(v) = fmax(v.x, fmax(v.y, v.z)) for every triple of
+ * 8 values (512 triples), NaN where fmax gives NaN and equal otherwise (a
+ * zero's sign aside, which fmax leaves open). */
+static void test_vec3_max_component_is_fmax(void **state)
+{
+    (void)state;
+    const double vals[8] = {0.25, -0.0, 0.0, 0.75, 0.25, -3.5, HUGE_VAL, (double)NAN};
+    for (int i = 0; i < 512; i++) {
+        vec3 v = vec3_make(vals[i & 7], vals[(i >> 3) & 7], vals[i >> 6]);
+        double want = fmax(v.x, fmax(v.y, v.z)), got = vec3_max_component(v);
+        if (isnan(want) ? !isnan(got) : got != want)
+            fail_msg("(%g, %g, %g): %g, fmax %g", v.x, v.y, v.z, got, want);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_onb_orthonormal_right_handed),
         cmocka_unit_test(test_onb_round_trip),
         cmocka_unit_test(test_onb_negative_control),
+        cmocka_unit_test(test_vec3_max_component_is_fmax),
     };
     return cmocka_run_group_tests_name("test_onb", tests, negctl_group_setup,
                                        negctl_group_teardown);

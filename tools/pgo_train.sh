@@ -18,6 +18,7 @@ run() {
 run --scene book --width 96 --spp 16
 run --scene book-metal --width 24 --spp 4
 run --scene book --width 48 --spp 8 --strategy bdpt --roulette
+run --scene lambert --width 32 --spp 4 --strategy bdpt --roulette
 run --scene lambert --width 24 --spp 4 --strategy lighttrace
 run --scene lambert --width 24 --spp 4 --strategy mis
 run --scene lambert --width 24 --spp 4 --strategy light
