@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "mc/onb.h"
+#include "mc/qmc.h"
 #include "render/bdpt_internal.h"
 #include "render/jitter.h"
 #include "render/lights.h"
@@ -131,15 +132,24 @@ vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t
 /* --- E S+ D S+ L: the caustic seen through the sphere ----------------- */
 
 /* Cosine sampling at the Lambertian D: BRDF x cos / density is the
- * albedo, whatever the direction. */
+ * albedo, whatever the direction. The rays' uniforms are the points of
+ * an Owen-scrambled Sobol set of RT_BDPT_THROUGH_RAYS = 2^4 points, a
+ * (0,4,2)-net under a scramble keyed from aux: each point alone is
+ * uniform, so the mean stays unbiased, and together they cover the
+ * hemisphere's strata evenly (paired renders of the book scene: about 7%
+ * less variance than independent directions, at the same cost). */
+_Static_assert((RT_BDPT_THROUGH_RAYS & (RT_BDPT_THROUGH_RAYS - 1)) == 0,
+               "the through rays are a whole Sobol net: a power of two");
+
 /* BEGIN SNIPPET bdpt_through */
 vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int jd, mc_rng *aux,
                               uint64_t *segments)
 {
     vec3 sum = vec3_make(0.0, 0.0, 0.0);
     onb frame = onb_from_w(d->ns);
+    uint64_t key = ((uint64_t)mc_rng_u32(aux) << 32) | mc_rng_u32(aux);
     for (int i = 0; i < RT_BDPT_THROUGH_RAYS; i++) {
-        double u1 = mc_rng_uniform(aux), u2 = mc_rng_uniform(aux);
+        double u1 = mc_sobol_owen((uint32_t)i, 0u, key, 0u), u2 = mc_sobol_owen((uint32_t)i, 1u, key, 0u);
         rt_ray r = rt_ray_make(d->p, pdf_cosine_direction(&frame, u1, u2));
         sum = vec3_add(sum, seen_any(c, r, max_segments(c) - jd, RT_BDPT_SPLITS, true, aux, segments));
     }
