@@ -80,14 +80,15 @@ wait
 [ ! -e "$STATE/failed" ] || exit 1
 
 # The warp lab: a page beside the chapters that runs the WebAssembly module
-# of `make lab` (BUILD/lab) with lab/lab.js. It is not in the EPUB, whose
+# of `make lab` (BUILD/lab) with lab/lab.js (and lab/own.js, its own-warp
+# box, loaded first). It is not in the EPUB, whose
 # readers run no scripts; the chapters link to it from .html-only blocks.
 # It is built after the chapters so that its links find their anchors.
 [ -f "$B/lab/lab-wasm.js" ] || { echo "book: $B/lab/lab-wasm.js is missing (make lab builds it)" >&2; exit 1; }
 mkdir -p "$OUT/lab"
-cp "$B/lab/lab-wasm.js" lab/lab.js lab/lab.css "$OUT/lab/"
+cp "$B/lab/lab-wasm.js" lab/own.js lab/lab.js lab/lab.css "$OUT/lab/"
 "${PANDOC[@]}" -t html5 -s --template book/template.html --mathml -M "pagetitle=$(title_of book/lab.md)" \
-    -V root= -V labcss=lab/lab.css -V labscript=lab/lab-wasm.js -V labscript=lab/lab.js \
+    -V root= -V labcss=lab/lab.css -V labscript=lab/lab-wasm.js -V labscript=lab/own.js -V labscript=lab/lab.js \
     -o "$OUT/lab.html" book/lab.md
 
 # The pages of whole files, with line numbers (anchors L-1, L-2, ...): plain

@@ -7,9 +7,10 @@
 #   3. the EPUB passes epubcheck;
 #   4. every page in headless Chromium: no console error, every <math>
 #      rendered with a size, a screenshot each (book/check_browser.py);
-#   5. the warp lab (lab.html) driven through its controls: rows pass, a
-#      negative control fails, the page's statistic is `warp chi2`'s, the
-#      estimator, a phone, JavaScript off (book/check_lab.py);
+#   5. the warp lab (lab.html) driven through its controls: live on load,
+#      rows pass, a negative control fails, the page's statistic is `warp
+#      chi2`'s, the estimator, the own-warp box (right, wrong, inconsistent,
+#      broken code), a phone, JavaScript off (book/check_lab.py);
 #   6. the checkers of 2 and 4 reject book/tests/broken-site/, a site
 #      broken on purpose in every way they look for (their negative control).
 # Ends with "N passed, N failed" over every case of every check.
@@ -71,8 +72,8 @@ python3 book/check_browser.py "$BOOK" | tee "$log"
 tally
 
 echo "== the warp lab in a browser"
-# Its rows, a negative control, the estimator, the command line's numbers,
-# a phone and JavaScript off (book/check_lab.py); the time of the module's
+# Its rows, a negative control, the estimator, the own-warp box, the
+# command line's numbers, a phone and JavaScript off (book/check_lab.py); the time of the module's
 # build and of this check, for the CI's budget.
 t0=$SECONDS
 python3 book/check_lab.py "$BOOK" "$B/bin" | tee "$log"

@@ -4,6 +4,9 @@ Debian's headless Chromium, as a reader would, through its own controls.
 
   - the page loads, the WebAssembly module starts, and nothing is logged as
     an error, thrown, or requested from anywhere but file: and data: URLs;
+  - every widget has run its default case on load, before any click: the
+    chi-square row passes, the own-warp box's example passes, and their
+    pictures are drawn;
   - three catalog rows pass and a negative control fails, the verdicts read
     from the page;
   - for one row, seed and count the page's line (statistic, dof, p-value,
@@ -11,11 +14,18 @@ Debian's headless Chromium, as a reader would, through its own controls.
     the times of the two are printed;
   - the estimator widget's estimates of pi and of the cos^3 integral lie
     within 4 standard errors of the exact values;
+  - the own-warp box: Malley's cosine warp passes against the cosine
+    hemisphere (all three checks, with its inverse); the uniform hemisphere
+    with its own, right, density is caught against the cosine target ("do
+    not follow"); the cosine warp with a pdf that lacks 1/pi fails on its
+    integral; a syntax error, a thrown exception (with its line), a NaN and
+    a wrong-shaped point each show the error panel and judge nothing;
   - at phone width (390 px) the page is no wider than the screen;
   - with JavaScript off the live parts stay hidden and the static runs and
     figures remain.
 Screenshots (whole page) go to BOOKDIR/screenshots/lab-desktop.png,
-lab-phone.png and lab-nojs.png. Prints one line per check and
+lab-phone.png and lab-nojs.png; of the own-warp box alone, caught and with an
+error, to lab-own-warp-wrong.png and lab-own-warp-error.png. Prints one line per check and
 "lab: N passed, N failed". The browser is driven as in check_browser.py.
 """
 import base64
@@ -38,6 +48,47 @@ CASES = [("cosine", "independent", 100000, 1, "pass"),
          ("cosine", "sobol", 100000, 1, "pass"),
          ("wrong-phong-exponent", "independent", 100000, 1, "fail")]
 COMPARE = ("cosine", 100000, 1)
+
+# Own warps for the own-warp box (JavaScript, as a reader types it).
+MALLEY_SAMPLE = """function sample(u1, u2) {
+  const a = 2 * u1 - 1, b = 2 * u2 - 1;
+  if (a === 0 && b === 0) return [0, 0, 1];
+  let r, phi;
+  if (Math.abs(a) > Math.abs(b)) { r = a; phi = (Math.PI / 4) * (b / a); }
+  else { r = b; phi = Math.PI / 2 - (Math.PI / 4) * (a / b); }
+  const x = r * Math.cos(phi), y = r * Math.sin(phi);
+  return [x, y, Math.sqrt(Math.max(0, 1 - x * x - y * y))];
+}
+"""
+MALLEY_INVERT = """function invert(w) {
+  const x = w[0], y = w[1], r = Math.hypot(x, y);
+  if (r === 0) return [0.5, 0.5];
+  let a, b;
+  if (Math.abs(x) >= Math.abs(y)) { a = x < 0 ? -r : r; b = a * Math.atan2(y / a, x / a) / (Math.PI / 4); }
+  else { b = y < 0 ? -r : r; a = (Math.PI / 2 - Math.atan2(y / b, x / b)) * b / (Math.PI / 4); }
+  return [(a + 1) / 2, (b + 1) / 2];
+}
+"""
+OWN_MALLEY = MALLEY_SAMPLE + "function pdf(w) { return w[2] > 0 ? w[2] / Math.PI : 0; }\n" + MALLEY_INVERT
+OWN_UNIFORM = """// the uniform hemisphere, with its own (right) density
+function sample(u1, u2) {
+  const z = u2, r = Math.sqrt(Math.max(0, 1 - z * z)), phi = 2 * Math.PI * u1;
+  return [r * Math.cos(phi), r * Math.sin(phi), z];
+}
+function pdf(w) { return w[2] >= 0 ? 1 / (2 * Math.PI) : 0; }
+"""
+OWN_NO_PI = MALLEY_SAMPLE + "function pdf(w) { return w[2] > 0 ? w[2] : 0; }\n"
+OWN_SYNTAX = "function sample(u1, u2) {\n  return [0, 0, 1];\n\nfunction pdf(w) { return 1; }\n"
+OWN_THROWS = """function sample(u1, u2) {
+  return [0, 0, 1];
+}
+function pdf(w) {
+  if (w[2] > 0.5) throw new Error("a deliberate exception");
+  return 1;
+}
+"""
+OWN_NAN = "function sample(u1, u2) { return [0, 0, 1]; }\nfunction pdf(w) { return Math.sqrt(-1); }\n"
+OWN_SHAPE = "function sample(u1, u2) { return [u1, u2]; }\nfunction pdf(w) { return 1; }\n"
 
 
 class Page:
@@ -106,6 +157,37 @@ class Page:
                    stat: document.getElementById('lab-stat').textContent,
                    status: document.getElementById('lab-status').textContent }; })()""")
 
+    def run_own(self, code, target, n, seed):
+        """The own-warp box: the code, target, count and seed; its verdict,
+        the lines of its checks and the error panel's text (None when
+        hidden)."""
+        self.press("""document.getElementById('own-code').value = %s;
+          const t = document.getElementById('own-target'); t.value = %s;
+          t.dispatchEvent(new Event('change'));
+          document.getElementById('own-n').value = '%d';
+          document.getElementById('own-seed').value = '%d';""" % (json.dumps(code), json.dumps(target), n, seed),
+                   "lab-own", "own-run")
+        return self.js("""(() => { const r = document.getElementById('lab-own');
+          const panel = document.getElementById('own-error');
+          return { state: r.dataset.state, verdict: r.dataset.verdict, ms: Number(r.dataset.ms),
+                   pictures: !document.getElementById('own-pictures').hidden,
+                   checks: Array.from(document.querySelectorAll('#own-checks li'))
+                               .map(li => li.innerText.trim().replace(/\\s*\\n\\s*/g, ' / ')),
+                   error: panel.hidden || getComputedStyle(panel).display === 'none' ? null : panel.textContent,
+                   status: document.getElementById('own-status').textContent }; })()""")
+
+    def screenshot_of(self, element_id, path):
+        """A screenshot of one element, in page coordinates."""
+        box = self.js("""(() => { const b = document.getElementById(%s).getBoundingClientRect();
+          return { x: b.left + scrollX, y: b.top + scrollY, width: b.width, height: b.height }; })()"""
+                      % json.dumps(element_id))
+        clip = dict(box, scale=1)
+        data = self.b.call("Page.captureScreenshot",
+                           {"format": "png", "captureBeyondViewport": True, "clip": clip},
+                           self.session, timeout=60)["data"]
+        with open(path, "wb") as f:
+            f.write(base64.b64decode(data))
+
     def run_estimate(self, kind, row, n, seed):
         self.press("""const k = document.getElementById('est-kind'); k.value = %s;
           k.dispatchEvent(new Event('change'));
@@ -159,6 +241,21 @@ def main():
         except TimeoutError as e:
             report(False, "module never started: %s; %s" % (e, "; ".join(page.problems()[:5])))
             return 1
+
+        # Live on load: every widget ran its default case once, no click.
+        s = page.js("""(() => { const d = (id) => document.getElementById(id).dataset;
+          const inked = (id) => { const c = document.getElementById(id);
+            const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            let k = 0; for (let i = 0; i < px.length; i += 4) if (px[i] < 200 || px[i + 2] < 200) k++;
+            return k; };
+          return { chi2: [d('lab-chi2').runs, d('lab-chi2').state, document.getElementById('lab-verdict').textContent],
+                   est: [d('lab-estimator').runs, d('lab-estimator').state],
+                   own: [d('lab-own').runs, d('lab-own').state, d('lab-own').verdict],
+                   ink: [inked('lab-marginal'), inked('lab-residual'), inked('own-top'), inked('own-residual')] }; })()""")
+        report(s["chi2"] == ["1", "done", "pass"] and s["est"] == ["1", "done"]
+               and s["own"] == ["1", "done", "pass"] and min(s["ink"]) > 500,
+               "live on load, no click: chi-square (runs, state, verdict) %s, estimator %s, own warp %s; "
+               "inked pixels of four pictures %s" % (s["chi2"], s["est"], s["own"], s["ink"]))
         for row, source, n, seed, want in CASES:
             r = page.run_chi2(row, source, n, seed)
             report(r["state"] == "done" and r["verdict"] == want,
@@ -184,6 +281,39 @@ def main():
             report(e["state"] == "done" and abs(e["z"]) < 4,
                    "estimator %s%s: %s, z = %s" % (kind, "" if kind == "pi" else " from " + erow,
                                                    e["value"], e["z"]))
+
+        # The own-warp box: a right warp, a wrong but consistent one, an
+        # inconsistent one, and code that fails in four ways.
+        o = page.run_own(OWN_MALLEY, "cosine", 100000, 1)
+        report(o["verdict"] == "pass" and len(o["checks"]) == 3 and not o["error"]
+               and all(c.startswith("[pass]") for c in o["checks"]) and "round trip" in o["checks"][0],
+               "own warp, Malley against cosine hemisphere: %s, %.0f ms; %s"
+               % (o["verdict"], o["ms"], " | ".join(o["checks"])))
+        o = page.run_own(OWN_UNIFORM, "cosine", 100000, 1)
+        caught = "do not follow cosine hemisphere" in "".join(o["checks"])
+        report(o["verdict"] == "fail" and len(o["checks"]) == 3 and o["checks"][0].startswith("[pass]")
+               and o["checks"][1].startswith("[FAIL]") and caught,
+               "own warp, uniform hemisphere with its own pdf against cosine: %s; %s"
+               % (o["verdict"], o["checks"][1] if len(o["checks"]) > 1 else o))
+        page.screenshot_of("lab-own", os.path.join(shots, "lab-own-warp-wrong.png"))
+        o = page.run_own(OWN_NO_PI, "cosine", 100000, 1)
+        report(o["verdict"] == "fail" and len(o["checks"]) == 3 and o["checks"][0].startswith("[FAIL]")
+               and "integrates to 3.14159" in o["checks"][0],
+               "own warp, cosine samples with a pdf lacking 1/pi: %s; %s"
+               % (o["verdict"], o["checks"][0] if o["checks"] else o))
+        for what, code, want in (("a syntax error", OWN_SYNTAX, "does not compile"),
+                                 ("a thrown exception", OWN_THROWS, "a deliberate exception (line 5 of your code)"),
+                                 ("a NaN density", OWN_NAN, "returned NaN"),
+                                 ("a 2D point for a direction", OWN_SHAPE, "needs [x, y, z]")):
+            o = page.run_own(code, "cosine", 10000, 1)
+            report(o["state"] == "error" and o["verdict"] == "error" and not o["checks"] and not o["pictures"]
+                   and o["error"] is not None and want in o["error"],
+                   "own warp, %s: error panel %s" % (what, json.dumps(o["error"])))
+            if code is OWN_THROWS:
+                page.screenshot_of("lab-own", os.path.join(shots, "lab-own-warp-error.png"))
+        o = page.run_own(OWN_MALLEY, "cosine", 10000, 2)
+        report(o["verdict"] == "pass" and o["error"] is None,
+               "own warp after an error: the panel goes, %s" % o["verdict"])
         page.screenshot(os.path.join(shots, "lab-desktop.png"))
         probs = page.problems()
         report(not probs, "desktop: no console error, no request off the disk" +
@@ -219,7 +349,8 @@ def main():
     finally:
         b.close()
         shutil.rmtree(profile, ignore_errors=True)
-    print("lab: screenshots lab-desktop.png, lab-phone.png, lab-nojs.png in " + shots)
+    print("lab: screenshots lab-desktop.png, lab-phone.png, lab-nojs.png, lab-own-warp-wrong.png, "
+          "lab-own-warp-error.png in " + shots)
     print("lab: %d passed, %d failed" % (passed, failed))
     return 0 if failed == 0 else 1
 

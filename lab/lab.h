@@ -87,4 +87,41 @@ double *lab_estimate_table(void);
  * the z score in %.2f, separated by spaces. */
 const char *lab_estimate_line(void);
 
+/* --- the own-warp box (lab/own.c) ------------------------------------------
+ * A sampler written by the reader in JavaScript, judged as the exercises
+ * judge theirs (ex_check_sampler_law) against a catalog row as the law
+ * asked for. The page calls lab_own_prepare(seed, n), reads the 2 n
+ * uniforms at lab_own_uniforms (PCG32, the stream mcbox_check_run hands a
+ * sampler of two uniforms), writes the reader's n points (three doubles
+ * each, unused coordinates 0) at lab_own_points and the reader's density at
+ * each at lab_own_pdfs, then calls lab_own_check with the law's row on the
+ * first line of the input buffer and its name on the second. The check
+ * calls back into the page for the reader's pdf and invert (the module's
+ * imports lab.pdf(x0, x1, x2) and lab.invert(x0, x1, x2, u), u a pointer to
+ * two doubles). Three checks follow, k = 0, 1, 2: your points against your
+ * density (chi-square, the density's integral, the round trip when
+ * has_invert), your points against the law (your density at the samples
+ * compared with the law's), your density against the law's on a grid.
+ * lab_own_report(k) is "status\tname\tkey\tfigure\twhy\txlabel\tylabel",
+ * status 0 pass, 1 fail, 2 could not run; lab_own_result(k) is status,
+ * statistic, dof, p-value, level, integral, its error, round-trip error,
+ * largest relative pdf difference, samples, outside, cells pooled, power
+ * (relative error detected), then the chart: dims, nx, ny, lo0, hi0, lo1,
+ * hi1 (NaN where a check has none; the grid check: status, points that
+ * differ, points). Observed and expected counts of checks 0 and 1 as in
+ * lab_observed. lab_own_prepare and lab_own_check return 1, or 0 for n
+ * outside 1 .. LAB_OWN_MAX_SAMPLES, no memory, or an unknown row. */
+#define LAB_OWN_MAX_SAMPLES 1000000
+#define LAB_OWN_CHECKS 3
+#define LAB_OWN_RESULT_COUNT 20
+int lab_own_prepare(uint32_t seed_hi, uint32_t seed_lo, double n);
+double *lab_own_uniforms(void);
+double *lab_own_points(void);
+double *lab_own_pdfs(void);
+int lab_own_check(uint32_t seed_hi, uint32_t seed_lo, int has_invert);
+const char *lab_own_report(int k);
+double *lab_own_result(int k);
+double *lab_own_observed(int k);
+double *lab_own_expected(int k);
+
 #endif /* LAB_LAB_H */

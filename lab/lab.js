@@ -13,6 +13,9 @@
  * controls a reader uses and read the results from data attributes:
  * data-state ("ready", "running", "done", "error") and data-runs on each
  * widget, data-line with the statistic line as `warp chi2` prints it.
+ * Every widget runs its default case once on load, before the body's
+ * data-lab says "ready"; lab/own.js (the own-warp box) registers itself in
+ * MCBOX_LAB_WIDGETS before this script runs.
  */
 "use strict";
 
@@ -34,19 +37,22 @@
   }
 
   /* The module is a WASI reactor that never reads or writes a file: every
-   * import it names (the C library's stdio) answers ENOSYS. */
+   * import it names (the C library's stdio) answers ENOSYS, but for those
+   * of "lab", the reader's pdf and invert (lab/own.c), which call whatever
+   * the own-warp box put in hooks. */
   async function load() {
     const module = await WebAssembly.compile(decode(window.MCBOX_LAB_WASM));
-    const imports = {};
+    const imports = {}, hooks = { pdf: () => NaN, invert: () => {} };
     for (const imp of WebAssembly.Module.imports(module)) {
-      (imports[imp.module] = imports[imp.module] || {})[imp.name] = () => 52;
+      (imports[imp.module] = imports[imp.module] || {})[imp.name] =
+        imp.module === "lab" ? (...a) => hooks[imp.name](...a) : () => 52;
     }
     const instance = await WebAssembly.instantiate(module, imports);
     const e = instance.exports;
     e._initialize();
     const bytes = () => new Uint8Array(e.memory.buffer);
     return {
-      e,
+      e, hooks,
       str(p) {
         const b = bytes();
         let q = p;
@@ -194,6 +200,33 @@
     axes(f, label, r.axes[0], "count");
   }
 
+  /* The pictures of a test into the canvases PREFIX-marginal, -observed,
+   * -expected and -residual: counts summed along the second chart
+   * coordinate, then (a 2D chart) the two tables and the standardized
+   * residuals. */
+  function tables(prefix, out) {
+    let top = 0;
+    for (let c = 0; c < out.exp.length; c++) top = Math.max(top, out.obs[c], out.exp[c]);
+    const shade = (v) => {
+      const t = Math.pow(Math.min(1, v / (top || 1)), 0.5);
+      return "rgb(" + Math.round(255 - 200 * t) + "," + Math.round(255 - 150 * t) + "," + Math.round(255 - 60 * t) + ")";
+    };
+    const twoD = out.c1 > 1, cv = (k) => $(prefix + "-" + k);
+    cv("observed").hidden = cv("expected").hidden = cv("residual").hidden = !twoD;
+    if (twoD) {
+      heat(cv("observed"), out.obs, out, "observed counts on the chart", shade);
+      heat(cv("expected"), out.exp, out, "expected: the density integrated per cell", shade);
+      heat(cv("residual"), out.obs, out, "residuals (obs \u2212 exp) / \u221aexp", (v, c) => {
+        const e = out.exp[c];
+        if (!(e > 0)) return v > 0 ? "#000" : "#eee";
+        const z = Math.max(-4, Math.min(4, (v - e) / Math.sqrt(e))) / 4;
+        return z > 0 ? "rgb(255," + Math.round(255 * (1 - z)) + "," + Math.round(255 * (1 - z)) + ")"
+                     : "rgb(" + Math.round(255 * (1 + z)) + "," + Math.round(255 * (1 + z)) + ",255)";
+      });
+    }
+    marginal(cv("marginal"), out, "observed (bars), expected (line)");
+  }
+
   /* --- the chi-square lab ----------------------------------------------- */
 
   function chi2Lab(lab, root, catalog) {
@@ -326,39 +359,20 @@
       }
       $("lab-side").hidden = !(r.point === "direction" || r.point === "point");
       $("lab-top").hidden = !(r.point === "direction" || r.point === "point" || r.point === "planar");
-      let top = 0;
-      for (let c = 0; c < out.exp.length; c++) top = Math.max(top, out.obs[c], out.exp[c]);
-      const shade = (v) => {
-        const t = Math.pow(Math.min(1, v / (top || 1)), 0.5);
-        return "rgb(" + Math.round(255 - 200 * t) + "," + Math.round(255 - 150 * t) + "," + Math.round(255 - 60 * t) + ")";
-      };
-      const twoD = out.c1 > 1;
-      $("lab-observed").hidden = $("lab-expected").hidden = $("lab-residual").hidden = !twoD;
-      if (twoD) {
-        heat($("lab-observed"), out.obs, out, "observed counts on the chart", shade);
-        heat($("lab-expected"), out.exp, out, "expected: the density integrated per cell", shade);
-        heat($("lab-residual"), out.obs, out, "residuals (obs \u2212 exp) / \u221aexp", (v, c) => {
-          const e = out.exp[c];
-          if (!(e > 0)) return v > 0 ? "#000" : "#eee";
-          const z = Math.max(-4, Math.min(4, (v - e) / Math.sqrt(e))) / 4;
-          return z > 0 ? "rgb(255," + Math.round(255 * (1 - z)) + "," + Math.round(255 * (1 - z)) + ")"
-                       : "rgb(" + Math.round(255 * (1 + z)) + "," + Math.round(255 * (1 + z)) + ",255)";
-        });
-      }
-      // Summed over the second chart coordinate when there is one.
-      marginal($("lab-marginal"), out, "observed (bars), expected (line)");
+      tables("lab", out);
     }
 
     rowSel.addEventListener("change", showRow);
-    $("lab-form").addEventListener("submit", (ev) => {
-      ev.preventDefault();
+    const go = () => new Promise((resolve) => {
       root.dataset.state = "running";
       status.textContent = "running\u2026";
       status.className = "lab-status";
       // Let the page paint "running" before the module holds the thread.
-      setTimeout(run, 20);
+      setTimeout(() => { try { run(); } finally { resolve(); } }, 20);
     });
+    $("lab-form").addEventListener("submit", (ev) => { ev.preventDefault(); go(); });
     showRow();
+    return go;
   }
 
   /* --- the estimator widget --------------------------------------------- */
@@ -477,25 +491,36 @@
       axes(g, "standard error (line), |error| (dots), \u03c3/\u221aN (dashed)", "log10 N", "log10");
     }
 
-    $("est-form").addEventListener("submit", (ev) => {
-      ev.preventDefault();
+    const go = () => new Promise((resolve) => {
       root.dataset.state = "running";
       status.textContent = "running\u2026";
-      setTimeout(run, 20);
+      setTimeout(() => { try { run(); } finally { resolve(); } }, 20);
     });
+    $("est-form").addEventListener("submit", (ev) => { ev.preventDefault(); go(); });
+    return go;
   }
 
   /* --- start ------------------------------------------------------------ */
 
+  /* What the widgets of other files draw with (lab/own.js). */
+  const DRAW = { el, seedHalves, scatter, boxOf, tables };
+
+  /* Starts every widget on the page, then runs each one's default case,
+   * one after the other, so that the page opens with results. */
   async function start() {
-    const chi2 = $("lab-chi2"), est = $("lab-estimator");
-    if (!chi2 && !est) return;
+    const widgets = [{ id: "lab-chi2", init: chi2Lab }, { id: "lab-estimator", init: estimatorLab }]
+      .concat(window.MCBOX_LAB_WIDGETS || []).filter((w) => $(w.id));
+    if (!widgets.length) return;
     const lab = await load();
     const catalog = JSON.parse(lab.str(lab.e.lab_catalog()));
     for (const w of document.querySelectorAll(".lab-live")) w.hidden = false;
     document.body.classList.add("lab-js");
-    if (chi2) { chi2Lab(lab, chi2, catalog); chi2.dataset.state = "ready"; }
-    if (est) { estimatorLab(lab, est, catalog); est.dataset.state = "ready"; }
+    const runs = [];
+    for (const w of widgets) {
+      runs.push(w.init(lab, $(w.id), catalog, DRAW));
+      $(w.id).dataset.state = "ready";
+    }
+    for (const go of runs) await go();
     document.body.dataset.lab = "ready";
   }
 

@@ -8,8 +8,11 @@
 #
 # The compiler is Debian's clang for the wasm32-wasi target, with Debian's
 # wasi-libc and compiler-rt builtins and lld as the linker: the same C
-# sources as the native build (mc/, samplers/, pdf/, catalog/), with the
-# same warnings, and lab/lab.c, the glue the page calls. mc/quad.c and
+# sources as the native build (mc/, samplers/, pdf/, catalog/ and the
+# public check, check/, but for the image check's check/image.c), with the
+# same warnings, and lab/lab.c and lab/own.c, the glue the page calls. The
+# module imports two functions, lab.pdf and lab.invert, from the page: the
+# reader's own warp (lab/own.js). mc/quad.c and
 # mc/chi2.c call GSL; the few GSL files behind them are compiled from
 # Debian's source package of the very GSL the native programs link (the
 # version dpkg reports for libgsl-dev), fetched by apt with a private
@@ -24,8 +27,9 @@ LAB_CC := clang --target=wasm32-wasi
 # threads, which wasi-libc has not) stay out; lab/gsl_quiet.c stands in
 # for the latter.
 LAB_CFLAGS := -std=c17 $(WARN) -O2 -I. -I$(LAB)/gsl/include -fno-math-errno -MMD -MP
-LAB_LIB_SRCS := $(filter-out mc/pi.c mc/gsl_quiet.c, \
-                  $(wildcard mc/*.c samplers/*.c pdf/*.c catalog/*.c)) lab/lab.c lab/gsl_quiet.c
+LAB_LIB_SRCS := $(filter-out mc/pi.c mc/gsl_quiet.c check/image.c, \
+                  $(wildcard mc/*.c samplers/*.c pdf/*.c catalog/*.c check/*.c)) \
+                lab/lab.c lab/own.c lab/gsl_quiet.c
 LAB_OBJS := $(patsubst %.c,$(LAB)/obj/%.o,$(LAB_LIB_SRCS))
 
 # The GSL files behind gsl_integration_qags, the Gauss-Legendre tables and
@@ -42,7 +46,8 @@ LAB_GSL_CFLAGS := -std=gnu99 -O2 -w -DHAVE_CONFIG_H -I$(LAB)/gsl/include -I$(LAB
 
 LAB_EXPORTS := lab_input lab_catalog lab_select lab_error lab_sources lab_chi2 lab_result \
                lab_observed lab_expected lab_line lab_points lab_estimate lab_estimate_table \
-               lab_estimate_line
+               lab_estimate_line lab_own_prepare lab_own_uniforms lab_own_points lab_own_pdfs \
+               lab_own_check lab_own_report lab_own_result lab_own_observed lab_own_expected
 
 .PHONY: lab _lab lab-deps
 
