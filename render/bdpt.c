@@ -73,7 +73,7 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
         L = vec3_add(L, rt_bdpt_seen_first(c, camera_ray, cam, nc, depth, aux, segments));
     /* The joins and splats queue their shadow rays; each adds its value
      * to L or to its pixel when its ray is found clear, in the order made. */
-    rt_bdpt_shadows q = rt_bdpt_shadows_begin(c, L, splats, segments);
+    rt_bdpt_shadows q = rt_bdpt_shadows_begin(L, splats, segments);
     for (int t = 1; t <= nc; t++)
         for (int s = 0; s <= nl; s++) {
             if (s + t < 2 || s + t - 1 > depth || (t == 1 && s == 0))

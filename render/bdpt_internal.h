@@ -142,8 +142,7 @@ typedef struct rt_bdpt_shadows {
 
 /* An empty queue adding to L and splats, counting its rays in
  * *segments. */
-rt_bdpt_shadows rt_bdpt_shadows_begin(const rt_bdpt_ctx *c, vec3 L, rt_splats *splats,
-                                      uint64_t *segments);
+rt_bdpt_shadows rt_bdpt_shadows_begin(vec3 L, rt_splats *splats, uint64_t *segments);
 
 /* Traces what is waiting and returns the sum L. */
 vec3 rt_bdpt_shadows_end(const rt_bdpt_ctx *c, rt_bdpt_shadows *q);

@@ -26,10 +26,8 @@ static vec3 end_factor(const rt_bdpt_vertex *x, vec3 to)
 
 /* --- the queue of shadow rays ----------------------------------------- */
 
-rt_bdpt_shadows rt_bdpt_shadows_begin(const rt_bdpt_ctx *c, vec3 L, rt_splats *splats,
-                                      uint64_t *segments)
+rt_bdpt_shadows rt_bdpt_shadows_begin(vec3 L, rt_splats *splats, uint64_t *segments)
 {
-    (void)c;
     rt_bdpt_shadows q;
     q.n_rays = q.n = 0;
     q.L = L;
@@ -73,7 +71,7 @@ static void flush(const rt_bdpt_ctx *c, rt_bdpt_shadows *q)
 }
 
 /* Queues v, to add to L (px = SIZE_MAX) or to pixel px's splat sums, if
- * nothing lies between the points a and b (a == b: no ray, always). */
+ * nothing lies between the points a and b (a NULL: no ray, always). */
 static void queue(const rt_bdpt_ctx *c, rt_bdpt_shadows *q, vec3 v, size_t px, const vec3 *a,
                   const vec3 *b)
 {
@@ -89,16 +87,16 @@ static void queue(const rt_bdpt_ctx *c, rt_bdpt_shadows *q, vec3 v, size_t px, c
     q->v[q->n] = v;
     q->px[q->n] = px;
     q->ray[q->n++] = ray;
-    if (q->n_rays == RT_LANES || q->n == RT_BDPT_QUEUE || (ray >= 0 && c->one_ray_at_a_time)) {
-        if (c->one_ray_at_a_time && ray >= 0) {
-            /* The reference: this ray alone, through rt_scene_hit. */
-            rt_hit h;
-            bool clear = !rt_scene_hit(c->scene, q->r[ray], q->tmax[ray], &h);
-            q->n_rays = 0;
+    if (ray >= 0 && c->one_ray_at_a_time) {
+        /* The reference: this ray alone, through rt_scene_hit, now. */
+        rt_hit h;
+        if (rt_scene_hit(c->scene, q->r[ray], q->tmax[ray], &h))
+            q->n--;
+        else
             q->ray[q->n - 1] = -1;
-            if (!clear)
-                q->n--;
-        }
+        q->n_rays = 0;
+        flush(c, q);
+    } else if (q->n_rays == RT_LANES || q->n == RT_BDPT_QUEUE) {
         flush(c, q);
     }
 }

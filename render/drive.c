@@ -114,8 +114,8 @@ static bool job_ok(const rt_render_job *job, const rt_image *img, int first, int
     return job->scene && job->spp >= 1 && job->camera.width == img->width &&
            job->camera.height == img->height && job->path.max_depth >= 0 &&
            !(splatting && job->path.max_depth > RT_BDPT_MAX_DEPTH) &&
-           !(rt_render_sampler_kind(job) == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX) && step >= 1 &&
-           step <= img->height && first >= 0 && first < img->height &&
+           !(rt_render_sampler_kind(job) == RT_SAMPLER_SOBOL && job->spp > UINT32_MAX) &&
+           step >= 1 && step <= img->height && first >= 0 && first < img->height &&
            (!splatting || (splats && splats->width == img->width && splats->height == img->height));
 }
 
@@ -167,7 +167,8 @@ int rt_render_part(const rt_render_job *job, rt_image *img, int first, int step,
     for (size_t i = 0; i < npix; i++)
         d.streams[i] = mc_rng_derive(job->seed, (uint64_t)i);
     rt_image_clear(img);
-    d.jt = rt_render_sampler_kind(job) == RT_SAMPLER_STRATIFIED ? rt_jitter_make(job->spp) : rt_jitter_none();
+    d.jt = rt_render_sampler_kind(job) == RT_SAMPLER_STRATIFIED ? rt_jitter_make(job->spp)
+                                                                : rt_jitter_none();
     /* Passes of at most 16 samples per pixel keep a row short enough for
      * the cancel flag to be answered within milliseconds. */
     uint64_t per = job->pass_spp ? job->pass_spp : (job->spp < 16 ? job->spp : 16);
