@@ -37,6 +37,9 @@ if [ -n "${BOOK_ONLY:-}" ]; then
     chapters=("${keep[@]}")
 fi
 [ ${#chapters[@]} -gt 0 ] || { echo "book: no chapters in book/" >&2; exit 1; }
+# The references page comes last, with every build (the chapters' [@key]
+# citations link to its entries).
+chapters+=(book/references.md)
 
 title_of() { # the chapter's first level-1 heading, without its attributes
     sed -n 's/^# \(.*\)$/\1/p' "$1" | head -1 | sed 's/ *{[^}]*}$//'
@@ -119,8 +122,11 @@ sort -u "$STATE/used-files" | while read -r f; do source_page "$f"; done
     cat book/index.md
     printf '\n::: {.contents}\n'
     for ch in "${chapters[@]}"; do
-        num=$((10#$(stem_of "$ch" | cut -d- -f1)))
-        [ "$num" = 99 ] && num=A
+        case $(stem_of "$ch") in
+        99-*) num=A ;;
+        [0-9][0-9]-*) num=$((10#$(stem_of "$ch" | cut -d- -f1))) ;;
+        *) num= ;;
+        esac
         printf -- '- [%s]{.number} [%s](%s.html) [%s]{.summary}\n' "$num" "$(title_of "$ch")" \
             "$(stem_of "$ch")" "$(summary_of "$ch")"
     done
@@ -156,6 +162,10 @@ if [ -z "${BOOK_ONLY:-}" ]; then
     done
     pandoc --fail-if-warnings -f markdown -t plain --lua-filter book/mcbox.lua \
         -M book-check-regions=true -o /dev/null </dev/null
+    # Every [@key] of a chapter or a comment has an entry in
+    # book/references.md, and every entry is cited.
+    pandoc --fail-if-warnings -f markdown -t plain --lua-filter book/mcbox.lua \
+        -M book-check-citations=true -o /dev/null </dev/null
 fi
 
 # What the build did, for the closing line and the README.

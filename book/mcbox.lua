@@ -1,6 +1,6 @@
 -- book/mcbox.lua - the pandoc filter that ties the book to the code.
 --
--- Four kinds of element in a chapter are resolved from the real tree when
+-- Five kinds of element in a chapter are resolved from the real tree when
 -- the book is built, so that nothing in the text can drift from the code:
 --
 --   ```{.listing file=mc/pi.c name=pi_plain}
@@ -28,6 +28,12 @@
 --                           a figure of `make plots`, with the command that
 --                           regenerates it; ![caption](run:file.png) is an
 --                           image a run of this chapter wrote.
+--   [@veach1997]            a citation: a link to the entry of that key on the
+--                           references page (book/references.md); see
+--                           "Citations" below.
+--   ::: {.tests run=ID}     a box of tests: a pipe table whose rows name a
+--   | test | ... | verdict |  test in backticks; each verdict is filled
+--   :::                     from the cmocka output of the run ID.
 --
 -- Every error stops the build with "file:line: message" on stderr and exit
 -- status 1. The environment says where things are: BOOK_BUILD (the build
@@ -456,6 +462,87 @@ local function link(el)
   return el
 end
 
+-- Citations ---------------------------------------------------------------
+-- [@key] in a chapter (pandoc's Cite; [@key, section 9.2] and [@a; @b]
+-- too) becomes a link to the entry of the references page, book/
+-- references.md (BOOK_REFS), where each entry is a Div
+--   ::: {#ref-key .reference label="Veach 1997"}
+-- whose label is the link's text. A key with no entry stops the build; the
+-- HTML pass records every key in BOOK_STATE/used-cites, for the check of
+-- the whole tree (check_citations) that also reads the code's comments.
+
+local refs_page = "references"
+local refs_path = os.getenv("BOOK_REFS") or (src_root .. "/book/" .. refs_page .. ".md")
+local refs_name = os.getenv("BOOK_REFS") or ("book/" .. refs_page .. ".md")
+
+local refs
+local function references() -- key -> { line, label }
+  if refs then return refs end
+  refs = {}
+  local f = io.open(refs_path, "r")
+  if f then
+    local i = 0
+    for l in f:lines() do
+      i = i + 1
+      local key, rest = l:match("^:::+%s*{#ref%-([%w_%-]+)(.*)$")
+      if key then
+        if refs[key] then
+          die(refs_name .. ":" .. i, "entry '" .. key .. "' is there twice (first at line " ..
+            refs[key].line .. ")")
+        end
+        refs[key] = { line = i, label = rest:match('label="([^"]*)"') or key }
+      end
+    end
+    f:close()
+  end
+  return refs
+end
+
+local function words(s) -- "Veach 1997" as inlines
+  local inl = {}
+  for w in s:gmatch("%S+") do
+    if #inl > 0 then inl[#inl + 1] = pandoc.Space() end
+    inl[#inl + 1] = pandoc.Str(w)
+  end
+  return inl
+end
+
+local function cite(el)
+  local here = chapter:match("([^/]+)%.md$")
+  local inl = {}
+  local function add(xs) for _, x in ipairs(xs) do inl[#inl + 1] = x end end
+  local in_text = #el.citations == 1 and el.citations[1].mode == "AuthorInText"
+  if not in_text then inl[1] = pandoc.Str("[") end
+  for i, c in ipairs(el.citations) do
+    local e = references()[c.id]
+    if not e then
+      die(chapter_where("@" .. c.id), "citation [@" .. c.id .. "] has no entry in " .. refs_name)
+    end
+    append_line(state .. "/used-cites", c.id)
+    local target = "#ref-" .. c.id
+    if not no_links and here ~= refs_page then target = refs_page .. ".html" .. target end
+    if i > 1 then add({ pandoc.Str(";"), pandoc.Space() }) end
+    if #c.prefix > 0 then add(c.prefix); add({ pandoc.Space() }) end
+    add({ pandoc.Link(words(e.label), target, "references: " .. e.label) })
+    add(c.suffix)
+  end
+  if not in_text then inl[#inl + 1] = pandoc.Str("]") end
+  return pandoc.Span(inl, pandoc.Attr("", { "citation" }))
+end
+
+-- An entry of the references page starts with its label, "[Veach 1997]", in bold.
+local function reference_entry(el)
+  if not el.classes:includes("reference") or not el.identifier:match("^ref%-") then return nil end
+  local label = el.attributes.label or el.identifier:sub(5)
+  el.attributes.label = nil
+  local first = el.content[1]
+  if first and (first.t == "Para" or first.t == "Plain") then
+    first.content:insert(1, pandoc.Space())
+    first.content:insert(1, pandoc.Strong(words("[" .. label .. "]")))
+  end
+  return el
+end
+
 -- HTML only ---------------------------------------------------------------
 -- A block of class html-only (a link to the warp lab, a live widget) is
 -- left out of the EPUB, whose readers run no scripts and have no lab page.
@@ -463,6 +550,99 @@ end
 local function html_only(el)
   if no_links and el.classes:includes("html-only") then return {} end
   return nil
+end
+
+-- The tests box ----------------------------------------------------------
+-- ::: {.tests run=ID} around a pipe table whose first column is a test
+-- name in backticks and whose last column, "verdict", is left empty: each
+-- name is looked up in the output of the run ID (cmocka prints
+-- "[       OK ] name" or "[  FAILED  ] name"), and the verdict is filled
+-- in. A name the run never printed, or one that failed, stops the build.
+-- A name ending in * stands for every test whose name starts with the rest.
+
+-- The line of the row naming `name`: the first one after the box opens.
+local function row_where(run_id, name)
+  chapter_where(nil)
+  local open
+  for i, l in ipairs(chapter_lines) do
+    if not open and l:find("run=" .. run_id, 1, true) and l:find(".tests", 1, true) then open = i end
+    if open and l:find("`" .. name .. "`", 1, true) then return chapter .. ":" .. i end
+  end
+  return open and (chapter .. ":" .. open) or chapter_where("run=" .. run_id)
+end
+
+local function tests_box(el)
+  local run_id = el.attributes.run
+  local where = chapter_where(".tests" .. (run_id and (" run=" .. run_id) or ""))
+  if not run_id then die(where, "a tests box needs run=") end
+  local r = runs[run_id]
+  if not r then die(where, "no run named '" .. run_id .. "' in this chapter") end
+  local ok, failed = {}, {}
+  for line in r.out:gmatch("[^\n]+") do
+    local n = line:match("^%[       OK %] (.-)%s*$")
+    if n then ok[n] = true end
+    n = line:match("^%[  FAILED  %] (.-)%s*$")
+    if n then failed[n] = true end
+  end
+  local tables = 0
+  local function row_verdict(row, ncols)
+    local cells = row.cells
+    local first = cells[1] and cells[1].contents
+    local code = first and #first == 1 and first[1].content and #first[1].content == 1 and
+      first[1].content[1].t == "Code" and first[1].content[1].text
+    if not code then
+      die(where, "the first cell of each row of a tests box is a test name in backticks, not '" ..
+        pandoc.utils.stringify(first or {}) .. "'")
+    end
+    local at = row_where(run_id, code)
+    if #cells ~= ncols then die(at, "the row of `" .. code .. "` has " .. #cells .. " cells, not " .. ncols) end
+    if pandoc.utils.stringify(cells[ncols].contents) ~= "" then
+      die(at, "the verdict of `" .. code .. "` is the build's to fill: leave the cell empty")
+    end
+    local verdict = "passed"
+    if code:sub(-1) == "*" then
+      -- `prefix*` stands for every test whose name starts with prefix (the
+      -- checks of one catalog case, `cosine: *`): all of them must pass.
+      local prefix, n = code:sub(1, -2), 0
+      for name in pairs(failed) do
+        if name:sub(1, #prefix) == prefix then
+          die(at, "test `" .. name .. "` failed in run '" .. run_id .. "'")
+        end
+      end
+      for name in pairs(ok) do
+        if name:sub(1, #prefix) == prefix then n = n + 1 end
+      end
+      if n == 0 then die(at, "no test matching `" .. code .. "` in the output of run '" .. run_id .. "'") end
+      verdict = "passed (" .. n .. ")"
+    else
+      if failed[code] then die(at, "test `" .. code .. "` failed in run '" .. run_id .. "'") end
+      if not ok[code] then die(at, "test `" .. code .. "` is not in the output of run '" .. run_id .. "'") end
+    end
+    cells[ncols].contents = { pandoc.Plain({ pandoc.Str(verdict) }) }
+    append_line(state .. "/test-count", chapter .. " " .. code)
+  end
+  el.content = el.content:walk({ Table = function(t)
+    tables = tables + 1
+    -- Natural column widths: a long row would otherwise make pandoc give
+    -- every column the same share, the verdict as much as the phrase.
+    for i, cs in ipairs(t.colspecs) do t.colspecs[i] = { cs[1], nil } end
+    local hrow = t.head.rows[1]
+    local ncols = hrow and #hrow.cells or 0
+    if ncols < 2 or pandoc.utils.stringify(hrow.cells[ncols].contents):lower() ~= "verdict" then
+      die(where, "the last column of a tests box is headed 'verdict'")
+    end
+    for _, body in ipairs(t.bodies) do
+      for _, row in ipairs(body.body) do row_verdict(row, ncols) end
+    end
+    return t
+  end })
+  if tables == 0 then die(where, "a tests box holds a pipe table") end
+  return el
+end
+
+local function div(el)
+  if el.classes:includes("tests") then return tests_box(el) end
+  return html_only(el)
 end
 
 -- The check of the whole tree -------------------------------------------
@@ -498,9 +678,53 @@ local function check_regions()
   io.stdout:write(n .. " marked regions, every one used\n")
 end
 
+-- With metadata book-check-citations: every [@key] in a comment of the
+-- source tree has an entry, and every entry is cited by a chapter (the
+-- HTML pass's state/used-cites) or a comment.
+local cite_dirs = "mc samplers pdf render check catalog conform imageio examples tests bench" ..
+  " lab exercises outside"
+
+local function check_citations()
+  local r = references()
+  local cited = {}
+  local f = io.open(state .. "/used-cites", "r")
+  if f then
+    for l in f:lines() do cited[l] = true end
+    f:close()
+  end
+  local p = io.popen("cd " .. shell_quote(src_root) .. " && grep -rnIE '\\[@[A-Za-z0-9_]' " ..
+    cite_dirs .. " 2>/dev/null | sort -t: -k1,1 -k2,2n")
+  local n = 0
+  for l in p:lines() do
+    local path, lno, text = l:match("^([^:]+):(%d+):(.*)$")
+    for inner in (text or ""):gmatch("%[(@[%w_][^%]]*)%]") do
+      for key in inner:gmatch("@([%w_][%w_%-]*)") do
+        if not r[key] then
+          die(path .. ":" .. lno, "citation [@" .. key .. "] has no entry in " .. refs_name)
+        end
+        cited[key] = true
+        n = n + 1
+      end
+    end
+  end
+  p:close()
+  local keys = {}
+  for key, e in pairs(r) do keys[#keys + 1] = { key, e.line } end
+  table.sort(keys, function(x, y) return x[2] < y[2] end)
+  for _, ke in ipairs(keys) do
+    if not cited[ke[1]] then
+      die(refs_name .. ":" .. ke[2], "entry '" .. ke[1] .. "' is cited by no chapter and no comment")
+    end
+  end
+  io.stdout:write(#keys .. " references, every one cited; " .. n .. " citations in comments\n")
+end
+
 function Pandoc(doc)
   if doc.meta["book-check-regions"] then
     check_regions()
+  end
+  if doc.meta["book-check-citations"] then
+    check_citations()
   end
   return nil
 end
@@ -511,13 +735,14 @@ return {
       if el.classes:includes("run") then return run(el) end
       return nil
     end },
+  { Cite = cite, Div = reference_entry },
   { Span = function(el)
       if el.classes:includes("num") then return number(el) end
       return nil
     end,
     Image = image,
     Link = link,
-    Div = html_only },
+    Div = div },
   { Para = para },
   { Pandoc = Pandoc },
 }

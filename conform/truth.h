@@ -15,7 +15,7 @@
  *   point's tangent plane is Lambert's formula, L / 2 times the sum over
  *   the polygon's edges of the angle the edge subtends times the cosine
  *   between the floor's normal and the normal of the plane through the
- *   point and the edge (Arvo 1995, "Applications of Irradiance Tensors to
+ *   point and the edge (Arvo 1995 [@arvo1995-tensors], "Applications of Irradiance Tensors to
  *   the Simulation of Non-Lambertian Phenomena", eq. 10: the projected
  *   solid angle as a contour integral).
  * - sphere-wall: a sphere of uniform radiance L and radius r wholly above

@@ -1,5 +1,5 @@
 /* exercises/power-heuristic.c - chapter 11, "Next-event estimation and
- * multiple importance sampling" (#ch-nee-mis): Veach's power heuristic.
+ * multiple importance sampling" (#ch-nee-mis): Veach's power heuristic [@veach1997].
  *
  * Two strategies sample the same integrand: f draws nf samples with
  * density f_pdf, g draws ng with density g_pdf (both densities at the same

@@ -1,4 +1,4 @@
-/* mc/chi2.h - Pearson's chi-square goodness-of-fit test, the pieces.
+/* mc/chi2.h - Pearson's chi-square goodness-of-fit test [@pearson1900], the pieces.
  *
  * The sampler tests histogram N samples into cells, integrate the claimed
  * pdf over each cell to get expected counts, and ask whether the observed
@@ -45,7 +45,7 @@ mc_chi2_result mc_chi2_pearson(const double *obs, const double *exp, size_t n, d
 double mc_chi2_pvalue(double stat, int dof);
 
 /* The per-test significance level that keeps the probability of one or more
- * false rejections among m independent tests at alpha (Sidak):
+ * false rejections among m independent tests at alpha (Sidak [@sidak1967]):
  * 1 - (1 - alpha)^(1/m). 0 < alpha < 1, m >= 1. */
 double mc_sidak_alpha(double alpha, int m);
 

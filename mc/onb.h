@@ -1,10 +1,10 @@
 /* mc/onb.h - orthonormal bases from a single vector.
  *
  * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 6
- * "Ortho-normal Bases" (this book's #ch-onb): samplers produce directions
+ * "Ortho-normal Bases" (this book's #ch-onb) [@shirley-rotl]: samplers produce directions
  * about +z; an ONB (s, t, n) carries them to a surface normal. The
  * construction is Duff et al., "Building an Orthonormal Basis, Revisited"
- * (JCGT 2017): no branch on a threshold, no singularity except the sign
+ * (JCGT 2017) [@duff2017]: no branch on a threshold, no singularity except the sign
  * choice at z = 0, exact to rounding for normals arbitrarily close to +-z.
  * The basis is right-handed: s x t = n.
  */

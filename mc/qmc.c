@@ -35,7 +35,7 @@ static uint64_t mix64(uint64_t x)
     return x ^ (x >> 33);
 }
 
-/* Chris Wellons' "lowbias32" (2018, "Prospecting for hash functions",
+/* Chris Wellons' "lowbias32" [@wellons2018] (2018, "Prospecting for hash functions",
  * nullprogram.com): a cheap 32-bit bijective mix, for the per-digit keys of
  * the Halton permutations. */
 static uint32_t mix32(uint32_t x)
@@ -212,11 +212,11 @@ uint32_t mc_sobol_u32(uint32_t i, unsigned dim)
 /* Owen's nested uniform scramble flips each bit by a random function of the
  * bits above it. Reversed, "above" becomes "below", and every step of
  * Laine and Karras's permutation (2011, "Stratified sampling for stochastic
- * transparency") changes bit k only by a function of bits 0..k: adding the
+ * transparency") [@laine-karras2011] changes bit k only by a function of bits 0..k: adding the
  * key, multiplying by an odd number, XOR with a multiple by an even one.
- * Burley (2020, "Practical Hash-based Owen Scrambling", JCGT 9(4)) uses this
+ * Burley (2020, "Practical Hash-based Owen Scrambling", JCGT 9(4)) [@burley2020] uses this
  * to scramble by hashing; the constants are Vegdahl's improved ones (2021,
- * "Building a better LK hash", psychopath.io). The lowest reversed bit (the
+ * "Building a better LK hash", psychopath.io) [@vegdahl2021]. The lowest reversed bit (the
  * first digit) is flipped by key bit 0. For k <= 16 the low k reversed bits
  * after `x += key` are uniform in the key's low bits, and the multiplier
  * depends only on its high half, so a uniform key makes the top 16 bits of
@@ -292,7 +292,7 @@ double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
 /* END SNIPPET owen_scramble */
 
 /* Kensler (2013, "Correlated Multi-Jittered Sampling", Pixar technical memo
- * 13-01), section 3: a hash that is a bijection on the w-bit integers
+ * 13-01) [@kensler2013], section 3: a hash that is a bijection on the w-bit integers
  * (w = the bits of n - 1): XOR with key bits, multiplication by odd
  * constants and xorshifts of the masked value are each invertible modulo
  * 2^w. Values >= n are walked along their cycle until they fall back into

@@ -13,7 +13,7 @@ void mc_rng_seed(mc_rng *rng, uint64_t seed, uint64_t stream)
 }
 
 /* BEGIN SNIPPET rng_derive */
-/* SplitMix64's finaliser (Steele, Lea, Flood 2014): a bijective 64-bit mix
+/* SplitMix64's finaliser (Steele, Lea, Flood 2014) [@steele2014]: a bijective 64-bit mix
  * whose outputs for consecutive inputs look independent. */
 static uint64_t splitmix64(uint64_t x)
 {
@@ -49,7 +49,7 @@ void mc_rng_advance(mc_rng *rng, uint64_t delta)
 {
     /* The LCG step s -> a s + c composed delta times is s -> A s + C; build
      * A and C by repeated squaring (F. Brown, "Random number generation with
-     * arbitrary strides", 1994). */
+     * arbitrary strides", 1994) [@brown1994]. */
     uint64_t cur_mult = MC_PCG32_MULT, cur_plus = rng->inc;
     uint64_t acc_mult = 1u, acc_plus = 0u;
     while (delta > 0) {

@@ -1,6 +1,6 @@
 /* mc/rng.h - PCG32 random number streams.
  *
- * The generator is O'Neill's PCG32 (XSH-RR output, 64-bit LCG state), the one
+ * The generator is O'Neill's PCG32 [@oneill2014] (XSH-RR output, 64-bit LCG state), the one
  * pbrt and Nori use: small, fast, statistically strong, and with 2^63
  * selectable streams. State is always explicit; there is no global generator
  * and no rand() anywhere in mcbox. Serves every chapter of this book,

@@ -5,7 +5,7 @@
  *
  * Provenance: Joe and Kuo's direction numbers new-joe-kuo-6.21201 (S. Joe
  * and F. Y. Kuo, "Constructing Sobol sequences with better two-dimensional
- * projections", SIAM J. Sci. Comput. 30, 2008; the file is published at
+ * projections", SIAM J. Sci. Comput. 30, 2008 [@joe-kuo2008]; the file is published at
  * https://web.maths.unsw.edu.au/~fkuo/sobol/), first MC_SOBOL_TABLE_DIMS
  * dimensions, read from the public copy Debian's python3-scipy ships
  * (scipy/stats/_sobol_direction_numbers.npz) and expanded by the

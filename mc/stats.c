@@ -14,7 +14,7 @@ mc_welford mc_welford_init(void)
 /* BEGIN SNIPPET welford_add */
 void mc_welford_add(mc_welford *w, double x)
 {
-    /* Welford (1962): update the mean by delta / n, then accumulate
+    /* Welford (1962) [@welford1962]: update the mean by delta / n, then accumulate
      * delta * (x - new mean), which equals (n-1)/n delta^2 without forming
      * a difference of large squares. */
     w->n += 1u;
@@ -30,7 +30,7 @@ mc_welford mc_welford_merge(mc_welford a, mc_welford b)
         return b;
     if (b.n == 0u)
         return a;
-    /* Chan, Golub and LeVeque (1979): the combined M2 is the sum of the
+    /* Chan, Golub and LeVeque (1979) [@chan1979]: the combined M2 is the sum of the
      * parts plus the between-group term delta^2 na nb / n. */
     mc_welford r;
     double na = (double)a.n, nb = (double)b.n;

@@ -16,7 +16,7 @@
  *   gauss   exp(-sum_j a_j^2 (x_j - u_j)^2): Genz's Gaussian family; per
  *           dimension sqrt(pi) / (2 a) (erf(a (1 - u)) + erf(a u)).
  *
- * Genz, "Testing multidimensional integration routines" (1984) defines the
+ * Genz, "Testing multidimensional integration routines" (1984) [@genz1984] defines the
  * families; the per-dimension integrals are the antiderivatives of
  * 1 / (1 + a^2 t^2) (atan(a t) / a) and of exp(-a^2 t^2)
  * (sqrt(pi) erf(a t) / (2 a)) between t = -u and t = 1 - u.

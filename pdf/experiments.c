@@ -98,7 +98,7 @@ double pdf_body_projected_area(pdf_body b, vec3 d)
 /* END SNIPPET body_projected_area */
 
 /* Whether the line o + t d (all t) meets the body. For the sphere, the
- * line's distance from the centre; for the box, Kay and Kajiya's slabs:
+ * line's distance from the centre; for the box, Kay and Kajiya's slabs [@kay-kajiya1986]:
  * the parameter intervals inside each pair of planes must overlap. A
  * direction parallel to a slab meets it iff the origin lies between its
  * planes (avoids 0 * inf = NaN). */

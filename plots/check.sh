@@ -7,7 +7,10 @@
 # NaN or infinity anywhere; and the fitted slopes say what the theory says:
 # plain pi within 0.05 of -1/2, stratified pi steeper than -0.7, and the
 # chi-square p-values of the correct sampler uniform (Kolmogorov-Smirnov),
-# those of the wrong one all below 1e-3. Exit status 1 on any failure.
+# those of the wrong one all below 1e-3; the power heuristic's weights of
+# the path figures sum to 1; and no figure or data file is older than the
+# script, style, data or program that makes it (with a negative control
+# that must be caught). Exit status 1 on any failure.
 set -uo pipefail
 
 out=$1
@@ -35,6 +38,11 @@ header_of() {
     chi2_cells.csv) echo i,j,cos_lo,cos_hi,phi_lo,phi_hi,observed,expected,diff_sd ;;
     chi2_pvalues.csv) echo case,seed,n,chi2,dof,p ;;
     efficiency.csv) echo problem,method,n,variance,exact,cpu_seconds,seconds_per_sample,seconds_to_1pct ;;
+    sphere_patch.csv | area_solid_angle.csv | onb_frames.csv | disc_mappings.csv | \
+        hemisphere_uniform_cosine.csv | sphere_light_cone.csv | cone_cap.csv | bdpt_strategies.csv)
+        echo curve,x,y,z ;;
+    mixture_lobes.csv) echo curve,angle_deg,density ;;
+    bdpt_weights.csv) echo height,w_s0,w_s1,w_s2,w_s3,sum ;;
     *) echo "" ;;
     esac
 }
@@ -134,6 +142,74 @@ if [ -f "$data/chi2_pvalues.csv" ]; then
         echo "plots-check: wrong sampler rejected at every seed (p < 1e-3): ok"
     else
         fail "wrong sampler has $big p-values >= 1e-3"
+    fi
+fi
+
+# The power heuristic's weights of a path sum to 1 over its strategies
+# (render/bdpt.h): on every path of the family and on the drawn one.
+if [ -f "$data/bdpt_weights.csv" ]; then
+    bad=$(awk -F, 'NR > 1 && ($6 < 1 - 1e-9 || $6 > 1 + 1e-9)' "$data/bdpt_weights.csv" | wc -l)
+    rows=$(($(wc -l <"$data/bdpt_weights.csv") - 1))
+    if [ "$bad" -eq 0 ] && [ "$rows" -ge 100 ]; then
+        echo "plots-check: MIS weights sum to 1 on all $rows paths of bdpt_weights: ok"
+    else
+        fail "bdpt_weights.csv: $bad of $rows rows whose weights do not sum to 1 (or fewer than 100 rows)"
+    fi
+fi
+if [ -f "$data/bdpt_strategies.csv" ]; then
+    sum=$(awk -F, '$1 ~ /^weight:/ { s += $2; n++ } END { if (n == 4) printf "%.12f", s }' "$data/bdpt_strategies.csv")
+    if awk -v s="$sum" 'BEGIN { exit !(s != "" && s > 1 - 1e-9 && s < 1 + 1e-9) }'; then
+        echo "plots-check: the drawn path's four weights sum to $sum: ok"
+    else
+        fail "bdpt_strategies.csv: the four weights sum to '$sum', not 1"
+    fi
+fi
+
+# No stale figure: every figure is newer than its gnuplot script, the
+# shared style and its data, and every data file newer than its data script
+# and the programs that script calls as $(prog NAME) (plots/Makefile.inc
+# makes them depend on exactly these, so an older file means a dependency
+# make did not know about). stale_in OUT BIN STEM... prints one line each.
+stale_in() {
+    local o=$1 b=$2 st f p
+    shift 2
+    for st in "$@"; do
+        for f in "$o/$st.png" "$o/$st.svg"; do
+            [ -f "$f" ] || continue
+            for p in "plots/$st.gp" plots/style.gp "$o/data/$st.csv"; do
+                [ -f "$p" ] && [ "$p" -nt "$f" ] && echo "$f is older than $p"
+            done
+        done
+        f=$o/data/$st.csv
+        [ -f "$f" ] || continue
+        for p in "plots/data_$st.sh" $(sed -n 's/.*$(prog \([A-Za-z0-9_-]*\)).*/\1/p' "plots/data_$st.sh" 2>/dev/null | sed "s#^#$b/#"); do
+            [ -f "$p" ] && [ "$p" -nt "$f" ] && echo "$f is older than $p"
+        done
+    done
+    return 0
+}
+bin=$(dirname "$out")/bin
+stale=$(stale_in "$out" "$bin" "$@")
+if [ -z "$stale" ]; then
+    echo "plots-check: no figure or data file older than what makes it: ok"
+else
+    while read -r line; do fail "stale: $line"; done <<<"$stale"
+fi
+# Its negative control: a copy of one figure and its data dated 2000 must be
+# reported as older than its script, its data script and its program.
+if [ -f "$out/disc_mappings.png" ] && [ -f "$data/disc_mappings.csv" ]; then
+    tmpd=$(mktemp -d)
+    mkdir -p "$tmpd/data"
+    cp "$out/disc_mappings.png" "$tmpd/" && cp "$data/disc_mappings.csv" "$tmpd/data/"
+    touch -d '2000-01-01' "$tmpd/disc_mappings.png" "$tmpd/data/disc_mappings.csv"
+    caught=$(stale_in "$tmpd" "$bin" disc_mappings)
+    rm -rf "$tmpd"
+    if grep -q 'older than plots/disc_mappings.gp' <<<"$caught" &&
+        grep -q 'older than plots/data_disc_mappings.sh' <<<"$caught" &&
+        grep -q "older than $bin/figure_geometry" <<<"$caught"; then
+        echo "plots-check: negative control: a figure and data older than their script and program are caught: ok"
+    else
+        fail "negative control: stale copies of disc_mappings not caught ($caught)"
     fi
 fi
 

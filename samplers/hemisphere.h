@@ -36,7 +36,7 @@ vec3 smp_hemisphere_flip_sample(double u1, double u2);
 /* The book's mapping: z = sqrt(1 - u2), phi = 2 pi u1. It is exactly the
  * polar disc sample (r^2 = u2) lifted to the hemisphere. */
 vec3 smp_cosine_hemisphere_sample(double u1, double u2);
-/* Malley's method: a concentric-disc point (x, y) lifted to
+/* Malley's method [@malley1988]: a concentric-disc point (x, y) lifted to
  * z = sqrt(1 - x^2 - y^2). Uniform in area below, cosine-weighted above,
  * because the projection onto the disc has Jacobian cos theta. */
 vec3 smp_cosine_hemisphere_sample_malley(double u1, double u2);

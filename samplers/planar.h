@@ -41,7 +41,7 @@ double smp_disc_polar_pdf(vec2 p);
 /* (phi / 2 pi, r^2) of p; p in the disc. */
 vec2 smp_disc_polar_invert(vec2 p);
 
-/* --- unit disc, concentric mapping (Shirley and Chiu 1997) -------------- */
+/* --- unit disc, concentric mapping (Shirley and Chiu 1997) [@shirley-chiu1997] ---------- */
 
 /* Maps the square [-1,1]^2 (as 2u - 1) to the disc ring by ring: square
  * shells to circles, so neighbouring points stay neighbours and the

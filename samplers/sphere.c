@@ -32,7 +32,7 @@ vec2 smp_uniform_sphere_invert(vec3 w)
 /* END SNIPPET sphere_inverse */
 
 /* BEGIN SNIPPET sphere_gaussian */
-/* Two standard normals from two uniforms (Box-Muller): the radius has
+/* Two standard normals from two uniforms (Box-Muller [@box-muller1958]): the radius has
  * P(R > r) = exp(-r^2 / 2), inverted as r = sqrt(-2 ln(1 - u)); 1 - u is in
  * (0, 1] so the logarithm is finite. */
 static void box_muller(double u1, double u2, double *g1, double *g2)

@@ -460,7 +460,7 @@ static double rms_slope(const integrand *g, mc_qmc_method method, uint64_t seed,
 }
 
 /* Fitted log-log slopes of the RMS error for f = 1 / (1 + x + y):
- * - Owen-scrambled Sobol, N = 2^6..2^16, R = 64: theory (Owen 1997) gives
+ * - Owen-scrambled Sobol, N = 2^6..2^16, R = 64: theory (Owen 1997) [@owen1997] gives
  *   variance O(N^-3 log N) for a smooth 2D integrand, so the local slope
  *   is -3/2 + 1 / (2 ln N), about -1.43 in the middle of the range; the
  *   bound -1.3 leaves 0.13. The RMS of 64 squared errors has a relative

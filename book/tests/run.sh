@@ -5,7 +5,11 @@
 # cases.txt gives the one line each must fail with (`file:line: message`),
 # and "good", the positive control, must build. "unused" builds the chapter
 # that uses one of the two regions of fixtures/src-unused/, then runs the
-# whole-tree check, which must name the other one.
+# whole-tree check, which must name the other one. "uncited" and
+# "missing-ref-comment" run the whole-tree check of citations over
+# fixtures/src-refs (an entry that nothing cites) and fixtures/src-refs-missing
+# (a comment that cites a key with no entry); the fixture chapters cite the
+# entries of fixtures/src-refs/book/references.md.
 # Prints a line per case and the totals as "book fixtures: N passed, N failed".
 set -u
 B=$(cd "${1:-build}" && pwd) || exit 1
@@ -19,7 +23,7 @@ build_fixture() { # $1 = chapter, $2 = source root; output in $tmp/out, $tmp/err
     # One anchor of a numbered chapter, for the links of wrong-chapter.
     echo "ch-pi 01-pi.html" >"$tmp/state/anchors"
     BOOK_BUILD=$B BOOK_OUT=$tmp/book BOOK_STATE=$tmp/state BOOK_RUNS=$tmp/state/cwd BOOK_SRC=$2 \
-        pandoc --fail-if-warnings --lua-filter ../mcbox.lua -f markdown -t html5 \
+        BOOK_REFS=$PWD/fixtures/src-refs/book/references.md pandoc --fail-if-warnings --lua-filter ../mcbox.lua -f markdown -t html5 \
         -o "$tmp/out" "$1" 2>"$tmp/err"
 }
 
@@ -40,6 +44,14 @@ while IFS=$'\t' read -r name want; do
         build_fixture "$tmp/uses.md" "$PWD/fixtures/src-unused"
         BOOK_BUILD=$B BOOK_STATE=$tmp/state BOOK_SRC=$PWD/fixtures/src-unused \
             pandoc -f markdown -t plain --lua-filter ../mcbox.lua -M book-check-regions=true \
+            -o /dev/null </dev/null 2>"$tmp/err"
+        rc=$?
+    elif [ "$name" = uncited ] || [ "$name" = missing-ref-comment ]; then
+        tree=src-refs
+        [ "$name" = uncited ] || tree=src-refs-missing
+        rm -rf "$tmp/state" && mkdir -p "$tmp/state"
+        BOOK_BUILD=$B BOOK_STATE=$tmp/state BOOK_SRC=$PWD/fixtures/$tree \
+            pandoc -f markdown -t plain --lua-filter ../mcbox.lua -M book-check-citations=true \
             -o /dev/null </dev/null 2>"$tmp/err"
         rc=$?
     else

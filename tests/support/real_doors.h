@@ -62,7 +62,7 @@ int rs_sphere_pvalues(const rs_sampler *s, uint64_t n, uint64_t seed0, int n_see
 
 /* Kolmogorov-Smirnov test of p[0 .. n) against the uniform law on [0, 1]:
  * the statistic D_n into *d, and its asymptotic p-value with Stephens'
- * correction (Stephens 1970: D (sqrt n + 0.12 + 0.11 / sqrt n)), good to a
+ * correction (Stephens 1970 [@stephens1970]: D (sqrt n + 0.12 + 0.11 / sqrt n)), good to a
  * few per cent for n >= 5. Sorts p. */
 double rs_ks_uniform(double *p, int n, double *d);
 

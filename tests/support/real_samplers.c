@@ -34,7 +34,7 @@ static vec3 ortho(vec3 v, vec3 a)
 }
 
 /* --- spherical triangle: Arvo, "Stratified sampling of spherical
- * triangles", SIGGRAPH 1995 ------------------------------------------------ */
+ * triangles", SIGGRAPH 1995 [@arvo1995-triangles] -------------------------------------------- */
 
 double rs_triangle_solid_angle(vec3 a, vec3 b, vec3 c)
 {
@@ -107,7 +107,7 @@ static bool triangle_contains(const rs_shape *sh, vec3 w)
 }
 
 /* --- spherical rectangle: Urena, Fajardo and King, "An area-preserving
- * parametrization for spherical rectangles", EGSR 2013 --------------------- */
+ * parametrization for spherical rectangles", EGSR 2013 [@urena2013] ----------------- */
 
 /* The rectangle in its local frame (Section 3): x, y along the edges, z
  * their normal turned away from the viewer so that z0 < 0; the corners
@@ -233,7 +233,7 @@ static vec3 cone_sample(const rs_shape *sh, double u1, double u2, int slip)
 }
 
 /* von Mises-Fisher by Jakob, "Numerically stable sampling of the von
- * Mises Fisher distribution on S^2" (2012): inverting the marginal CDF of
+ * Mises Fisher distribution on S^2" (2012) [@jakob2012]: inverting the marginal CDF of
  * w = cos theta, F(w) = (e^{kappa (w - 1)} - e^{-2 kappa}) / (1 - e^{-2 kappa}),
  * gives 1 - w = -log(u + (1 - u) e^{-2 kappa}) / kappa, computed as 1 - w
  * itself so that sin theta = sqrt((1 - w)(1 + w)) keeps its digits near
@@ -255,7 +255,7 @@ static double vmf_pdf(const rs_shape *sh, vec3 w)
 
 /* Beckmann normals drawn proportionally to D(h) cos theta_h (Walter et
  * al., "Microfacet models for refraction through rough surfaces", EGSR
- * 2007, eq. 28): tan^2 theta = -alpha^2 log(1 - u1), phi = 2 pi u2. */
+ * 2007, eq. 28) [@walter2007]: tan^2 theta = -alpha^2 log(1 - u1), phi = 2 pi u2. */
 static vec3 beckmann_sample(double alpha, double u1, double u2)
 {
     double t2 = -alpha * alpha * log(1.0 - u1);

@@ -91,7 +91,7 @@ size_t rs_cli_args(const rs_sampler *s, rs_chart c, char *buf, size_t size);
 /* --- the shapes' own mathematics, for their tests ------------------------ */
 
 /* The solid angle of the spherical triangle with unit vertices a, b, c by
- * Van Oosterom and Strackee (1983): tan(Omega / 2) = |a . (b x c)| /
+ * Van Oosterom and Strackee (1983) [@vanoosterom1983]: tan(Omega / 2) = |a . (b x c)| /
  * (1 + a.b + b.c + c.a). */
 double rs_triangle_solid_angle(vec3 a, vec3 b, vec3 c);
 
