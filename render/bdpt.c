@@ -1,6 +1,6 @@
 /* render/bdpt.c - bidirectional path tracing: the context, the camera's
  * importance and the strategies run over the two subpaths (Veach's thesis,
- * 1997, its chapter 10; this book's #ch-caustic). The other seams of the
+ * 1997, its chapter 10 [@veach1997]; this book's #ch-caustic). The other seams of the
  * algorithm have files of their own (render/bdpt_internal.h lists them). */
 #include "render/bdpt.h"
 

@@ -7,7 +7,7 @@
  * to aim at the sphere and the sphere happens to send it to the lamp; a
  * path traced from the lamp through the sphere lands in the caustic every
  * time, and only its last step, to the camera, has to be made by a
- * connection. Veach's thesis (1997; its chapter 10, "Bidirectional path tracing")
+ * connection. Veach's thesis [@veach1997] (1997; its chapter 10, "Bidirectional path tracing")
  * does both at once:
  *   - a light subpath y_0 .. y_{s-1}: y_0 uniform on the area of an
  *     emitter chosen uniformly (rt_scene_emitters), then cosine-weighted

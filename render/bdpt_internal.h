@@ -1,6 +1,6 @@
 /* render/bdpt_internal.h - what the files of the bidirectional path tracer
  * share among themselves (this book's #ch-caustic; Veach's thesis, 1997,
- * its chapter 10). Internal: render/bdpt*.c include it, and the value
+ * its chapter 10) [@veach1997]. Internal: render/bdpt*.c include it, and the value
  * tests (tests/test_render_values.c), which pin the weights against
  * densities written out by hand; no program does, and `make install` does
  * not ship it; render/bdpt.h is the contract.
@@ -68,7 +68,8 @@ double rt_bdpt_origin_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x);
  *
  * And the running sums of the power heuristic's denominator, one per
  * vertex, that make a join's weight O(1) (the recursive form of the
- * weights that vertex connection and merging renderers use): la[i] is
+ * weights that vertex connection and merging renderers use
+ * [@georgiev2012]): la[i] is
  * the sum over the strategies r <= i that make light vertices 0..r-1 from
  * the light (ok ones only) of prod_{k=r..i} (lr[k] / lf[k])^2; ce[j] the
  * sum over the strategies with t' = 1..j camera vertices of

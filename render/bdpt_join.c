@@ -1,7 +1,7 @@
 /* render/bdpt_join.c - the joins of a light subpath's end to a camera
  * subpath's: a shadow ray between two vertices (t >= 2) and the splat of
  * a light vertex seen by the camera onto its pixel (t = 1, light
- * tracing); Veach's thesis, 1997, 10.2; this book's #ch-caustic. */
+ * tracing); Veach's thesis, 1997, 10.2 [@veach1997]; this book's #ch-caustic. */
 #include <math.h>
 #include <stdint.h>
 

@@ -1,6 +1,6 @@
 /* render/bdpt_mis.c - the densities with which each strategy makes a
  * joined path, and the power heuristic's weights over the strategies
- * (Veach's thesis, 1997, 10.3 and 9.2; this book's #ch-caustic). */
+ * (Veach's thesis, 1997, 10.3 and 9.2 [@veach1997]; this book's #ch-caustic). */
 #include <math.h>
 
 #include "mc/constants.h"
@@ -262,7 +262,8 @@ static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *s
         double q1 = origin / sp->cf[t - 1];
         double q2 = area_pdf(c, z, AS_ORIGIN, &cam[t - 2]) / sp->cf[t - 2];
         bool ok1 = sp->jc[t - 2], ok2 = sp->jc[t - 2] && sp->jc[t - 3];
-        double sum = q1 * q1 * ((ok1 ? 1.0 : 0.0) + q2 * q2 * ((ok2 ? splat : 0.0) + sp->ce[t - 3]));
+        double inner = q2 * q2 * ((ok2 ? splat : 0.0) + sp->ce[t - 3]);
+        double sum = q1 * q1 * ((ok1 ? 1.0 : 0.0) + inner);
         /* weight_from's rule for light reached through a specular x[1]. */
         if (cam[t - 2].delta && (ok1 || ok2 || sp->ce_any[t - 3]))
             return 0.0;

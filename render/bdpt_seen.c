@@ -149,7 +149,8 @@ vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int
     onb frame = onb_from_w(d->ns);
     uint64_t key = ((uint64_t)mc_rng_u32(aux) << 32) | mc_rng_u32(aux);
     for (int i = 0; i < RT_BDPT_THROUGH_RAYS; i++) {
-        double u1 = mc_sobol_owen((uint32_t)i, 0u, key, 0u), u2 = mc_sobol_owen((uint32_t)i, 1u, key, 0u);
+        double u1 = mc_sobol_owen((uint32_t)i, 0u, key, 0u);
+        double u2 = mc_sobol_owen((uint32_t)i, 1u, key, 0u);
         rt_ray r = rt_ray_make(d->p, pdf_cosine_direction(&frame, u1, u2));
         sum = vec3_add(sum, seen_any(c, r, max_segments(c) - jd, RT_BDPT_SPLITS, true, aux, segments));
     }

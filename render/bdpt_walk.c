@@ -1,7 +1,7 @@
 /* render/bdpt_walk.c - the two subpaths: the walk that both ends share
  * (the materials' own sampling, cosine sampling at Lambertian surfaces,
  * Russian roulette) and the start of a light subpath on an emitter
- * (Veach's thesis, 1997, 10.2; this book's #ch-caustic). */
+ * (Veach's thesis, 1997, 10.2 [@veach1997]; this book's #ch-caustic). */
 #include <math.h>
 
 #include "mc/constants.h"

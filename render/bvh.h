@@ -1,7 +1,7 @@
 /* render/bvh.h - a bounding volume hierarchy over the scene's primitives.
  *
  * Construction is top-down with the surface area heuristic evaluated on
- * RT_BVH_BINS centroid bins (the binned SAH of pbrt and of the cranberray
+ * RT_BVH_BINS centroid bins (the binned SAH of pbrt [@pharr2023] and of the cranberray
  * posts, which use 12 buckets): at each node the split minimises
  *     C_trav + (A_left N_left + A_right N_right) / A_parent
  * (areas of bounding boxes, N primitive counts, one unit per primitive

@@ -1,6 +1,6 @@
 /* render/image.h - the accumulated image and its output files.
  *
- * Every pixel keeps the running mean and squared deviations (Welford) of
+ * Every pixel keeps the running mean and squared deviations (Welford [@welford1962]) of
  * its finite samples in double precision, linear radiance, plus how many
  * non-finite samples were dropped. Shirley's "Ray Tracing: The Rest of
  * Your Life" (v1.123, chapter 10; de_nan in main.cc of release v1.123.0)

@@ -3,7 +3,7 @@
  * Two integrators, five strategies, one quantity: every strategy estimates
  * the same sum over paths of at most max_depth ray segments (a segment is
  * one ray from one surface point to the next hit), so that they must agree
- * image for image (Shirley, "Ray Tracing: The Rest of Your Life" (v1.123),
+ * image for image (Shirley, "Ray Tracing: The Rest of Your Life" (v1.123) [@shirley-rotl],
  * chapter 4: two strategies that should agree but do not reveal a bug).
  *
  * The book's integrator (its chapters 4-10; this book's #ch-cornell): at a diffuse hit one direction is

@@ -1,7 +1,7 @@
 /* render/material.h - what happens where a ray meets a surface: emission,
  * and scattering described by a scatter record.
  *
- * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123), chapter 10
+ * Shirley, "Ray Tracing: The Rest of Your Life" (v1.123) [@shirley-rotl], chapter 10
  * ("Cleaning Up pdf Management"): a material either scatters diffusely,
  * handing the integrator the pdf object of its scattering density (its
  * chapter 3: the Lambertian scattering pdf is cos(theta) / pi), or
@@ -142,7 +142,7 @@ bool rt_refract(vec3 d, vec3 n, double eta, vec3 *out);
  * 1 under total internal reflection. */
 double rt_fresnel_exact(double cos_i, double n1, double n2);
 
-/* Schlick's approximation of the same reflectance. The cosine used is that
+/* Schlick's approximation [@schlick1994] of the same reflectance. The cosine used is that
  * on the rarer side of the interface (the incident one when n1 <= n2, the
  * transmitted one otherwise): the reflectance is symmetric in the two
  * angles, and only on the rarer side does the approximation hold. The

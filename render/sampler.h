@@ -9,7 +9,7 @@
  *   RT_SAMPLER_INDEPENDENT every draw, the pixel position too, from the
  *                          pixel's PCG32 stream
  *   RT_SAMPLER_SOBOL       Owen-scrambled Sobol points, padded as pbrt-v4's
- *                          PaddedSobolSampler pads them: each 1D or 2D
+ *                          PaddedSobolSampler [@pharr2023] pads them: each 1D or 2D
  *                          request of sample k of pixel p is the first or
  *                          the first two dimensions of Sobol point
  *                          perm(k), with the index permutation perm and the

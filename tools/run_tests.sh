@@ -4,7 +4,8 @@
 # and the full output of the groups that failed (of every group with
 # MC_TEST_VERBOSE=1), then the negative-control tally and one closing line
 # "N passed, N failed" summed over every group. With JUNIT=1 each group also writes cmocka's
-# JUnit XML to $MC_BUILD/test-results/<group>.xml.
+# JUnit XML to $MC_BUILD/test-results/<group>.xml. The output of a group
+# that passed a full run is kept in $MC_BUILD/test-logs/<group>.log.
 # Environment passed to the tests: MC_BUILD (the build directory, where the
 # programs under test live), MC_TEST_SEED (optional seed override).
 set -u
@@ -32,6 +33,16 @@ run_one() { # $1 = test program; writes $logs/<name>.log, .secs and .rc (last)
     fi
     local rc=$?
     awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f\n", b - a }' >"$logs/$name.secs"
+    # The whole group's output, kept for the book's boxes of tests
+    # (tools/test_verdicts.sh): only a full run at the tests' own seeds,
+    # in text, that passed.
+    if [ "$rc" = 0 ] && [ "${JUNIT:-0}" != 1 ] && [ -z "${MC_TEST_ONLY:-}" ] &&
+        [ -z "${MC_TEST_SEED:-}" ]; then
+        mkdir -p "$build/test-logs" && cp "$logs/$name.log" "$build/test-logs/$name.log.tmp" &&
+            mv "$build/test-logs/$name.log.tmp" "$build/test-logs/$name.log"
+    else
+        rm -f "$build/test-logs/$name.log"
+    fi
     echo $rc >"$logs/$name.rc.tmp" && mv "$logs/$name.rc.tmp" "$logs/$name.rc"
 }
 
