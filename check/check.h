@@ -292,6 +292,13 @@ typedef struct mcbox_check_table {
 } mcbox_check_table;
 void mcbox_check_table_free(mcbox_check_table *t);
 
+/* The short figure of a result r in buf (size bytes, always terminated),
+ * in the order the check judges: non-finite samples, samples outside, bad
+ * pdf values, the integral when it is off 1 by more than 1e-6, the
+ * reported pdf's or the round trip's largest error when above 1e-6, else
+ * the statistic, e.g. "chi2 452.29/464 dof, p = 0.643". */
+void mcbox_check_figure(const mcbox_check_result *r, char *buf, size_t size);
+
 /* Draws o->samples samples from s, checks them and fills r (and t). Returns
  * 0 when the check ran (the verdict is r->pass), -1 when it could not: an
  * invalid sampler or option, an unknown catalog row, no memory; then

@@ -4,6 +4,7 @@
  * the chart resolves the density at all. */
 #include "check/internal.h"
 
+#include <inttypes.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -256,4 +257,22 @@ void chk_verdict(mcbox_check *c, const double *expct, size_t cells, bool finite_
         resolution_warning(c, why);
     power(c, q);
     decide(c, expct, cells, finite_exp, q, resolved);
+}
+
+void mcbox_check_figure(const mcbox_check_result *r, char *buf, size_t size)
+{
+    if (r->nonfinite)
+        snprintf(buf, size, "%" PRIu64 " non-finite samples", r->nonfinite);
+    else if (r->outside)
+        snprintf(buf, size, "%" PRIu64 " samples outside", r->outside);
+    else if (r->bad_pdf)
+        snprintf(buf, size, "%" PRIu64 " bad pdf values", r->bad_pdf);
+    else if (!(fabs(r->pdf_integral - 1.0) <= 1e-6))
+        snprintf(buf, size, "pdf integrates to %.6g", r->pdf_integral);
+    else if (!(r->pdf_mismatch <= 1e-6))
+        snprintf(buf, size, "reported pdf off by %.3g", r->pdf_mismatch);
+    else if (!isnan(r->invert_error) && !(r->invert_error <= 1e-6))
+        snprintf(buf, size, "round trip off by %.3g", r->invert_error);
+    else
+        snprintf(buf, size, "chi2 %.5g/%d dof, p = %.3g", r->statistic, r->dof, r->pvalue);
 }

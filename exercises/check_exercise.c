@@ -191,26 +191,6 @@ static void write_picture(ex_judge *j, const char *what, const mcbox_check_table
 
 /* --- the checks ------------------------------------------------------------ */
 
-/* The short figure of a sampler check, in the order the check API judges:
- * points that are not points, then the density, then the statistics. */
-static void sampler_key(const mcbox_check_result *r, char *buf, size_t size)
-{
-    if (r->nonfinite)
-        snprintf(buf, size, "%" PRIu64 " non-finite samples", r->nonfinite);
-    else if (r->outside)
-        snprintf(buf, size, "%" PRIu64 " samples outside", r->outside);
-    else if (r->bad_pdf)
-        snprintf(buf, size, "%" PRIu64 " bad pdf values", r->bad_pdf);
-    else if (!(fabs(r->pdf_integral - 1.0) <= 1e-6))
-        snprintf(buf, size, "pdf integrates to %.6g", r->pdf_integral);
-    else if (!(r->pdf_mismatch <= 1e-6))
-        snprintf(buf, size, "reported pdf off by %.3g", r->pdf_mismatch);
-    else if (!isnan(r->invert_error) && !(r->invert_error <= 1e-6))
-        snprintf(buf, size, "round trip off by %.3g", r->invert_error);
-    else
-        snprintf(buf, size, "chi2 %.5g/%d dof, p = %.3g", r->statistic, r->dof, r->pvalue);
-}
-
 static void direction_sample(const double *u, mcbox_sample *out, void *ctx)
 {
     const ex_direction_fns *f = ctx;
@@ -256,7 +236,7 @@ static int run_check(ex_judge *j, const mcbox_sampler *s, bool pinned, uint64_t 
     int rc = mcbox_check_run(s, &o, r, j->plot_dir ? t : NULL);
     j->stat_tests++;
     char tail[120] = "no inverse";
-    sampler_key(r, key, 120);
+    mcbox_check_figure(r, key, 120);
     if (pinned)
         snprintf(tail, sizeof tail, "your density at the samples off the law's by %.3g at most",
                  r->pdf_mismatch);

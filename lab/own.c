@@ -156,26 +156,6 @@ static int run_check(const mcbox_sampler *s, bool pinned, uint64_t seed, mcbox_c
     return r->pass ? 0 : 1;
 }
 
-/* The short figure of a check, in the order the check judges: as the
- * exercises' sampler_key. */
-static void key_of(const mcbox_check_result *r, char *buf, size_t size)
-{
-    if (r->nonfinite)
-        snprintf(buf, size, "%" PRIu64 " non-finite samples", r->nonfinite);
-    else if (r->outside)
-        snprintf(buf, size, "%" PRIu64 " samples outside", r->outside);
-    else if (r->bad_pdf)
-        snprintf(buf, size, "%" PRIu64 " bad pdf values", r->bad_pdf);
-    else if (!(fabs(r->pdf_integral - 1.0) <= 1e-6))
-        snprintf(buf, size, "pdf integrates to %.6g", r->pdf_integral);
-    else if (!(r->pdf_mismatch <= 1e-6))
-        snprintf(buf, size, "reported pdf off by %.3g", r->pdf_mismatch);
-    else if (!isnan(r->invert_error) && !(r->invert_error <= 1e-6))
-        snprintf(buf, size, "round trip off by %.3g", r->invert_error);
-    else
-        snprintf(buf, size, "chi2 %.5g/%d dof, p = %.3g", r->statistic, r->dof, r->pvalue);
-}
-
 static void keep(int k, int status, const char *name, const char *key, const char *fig,
                  const char *why, const mcbox_check_result *r, const mcbox_check_table *t)
 {
@@ -330,7 +310,7 @@ EXPORT(lab_own_check) int lab_own_check(uint32_t seed_hi, uint32_t seed_lo, int 
     s.invert = has_invert ? reader_invert : NULL;
     char key[120], fig[400], why[800];
     int mine = run_check(&s, false, seed, &results[0], &tables[0]);
-    key_of(&results[0], key, sizeof key);
+    mcbox_check_figure(&results[0], key, sizeof key);
     figure(&results[0], false, seed, fig, sizeof fig);
     keep(0, mine, "your points, your density", key, fig, results[0].message, &results[0],
          &tables[0]);
@@ -339,7 +319,7 @@ EXPORT(lab_own_check) int lab_own_check(uint32_t seed_hi, uint32_t seed_lo, int 
      * sample compared with the law's. */
     s.pdf = law_pdf, s.invert = NULL;
     int pinned = run_check(&s, true, seed, &results[1], &tables[1]);
-    key_of(&results[1], key, sizeof key);
+    mcbox_check_figure(&results[1], key, sizeof key);
     figure(&results[1], true, seed, fig, sizeof fig);
     why[0] = '\0';
     if (pinned == 1)
