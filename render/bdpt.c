@@ -64,11 +64,13 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
                                        segments);
     int nl = rt_bdpt_light_walk(c, sampler, light, depth, segments);
     rt_bdpt_subpath_pdfs sp;
-    int jd = 0;
-    if (all)
+    int jd[RT_BDPT_MAX_DEPTH + 1], njd = 0;
+    if (all) {
         rt_bdpt_cache_pdfs(c, light, nl, cam, nc, &sp);
-    if (all && (jd = rt_bdpt_through_vertex(cam, nc)) > 0)
-        L = rt_bdpt_through_estimate(c, &cam[jd], jd, aux, segments);
+        njd = rt_bdpt_through_vertices(cam, nc, jd);
+    }
+    for (int i = 0; i < njd; i++)
+        L = vec3_add(L, rt_bdpt_through_estimate(c, &cam[jd[i]], jd[i], aux, segments));
     if (all && seen_here)
         L = vec3_add(L, rt_bdpt_seen_first(c, camera_ray, cam, nc, depth, aux, segments));
     /* The joins and splats queue their shadow rays; each adds its value
@@ -89,7 +91,7 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
                                         &q);
                 continue;
             }
-            if (all && s == 0 && rt_bdpt_estimated_apart(ps, cam, t, jd))
+            if (all && s == 0 && rt_bdpt_estimated_apart(ps, cam, t, jd, njd))
                 continue; /* rt_bdpt_seen_sample's or rt_bdpt_through_estimate's */
             rt_bdpt_join(c, all ? &sp : NULL, light, s, cam, t, all ? aux : NULL, &q);
         }

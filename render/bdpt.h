@@ -168,7 +168,7 @@ double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, 
  * With every strategy weighted, the paths E S* L (see below) are left
  * out and estimated apart: here from the camera subpath's first hit
  * when seen_here (a pixel that is not an edge), else by the caller with
- * rt_bdpt_seen_sample; the paths E S+ D S+ L are
+ * rt_bdpt_seen_sample; the paths E (S+ D)+ S+ L are
  * left out too and estimated here by split rays (RT_BDPT_THROUGH_RAYS);
  * and shadow rays play roulette (RT_BDPT_JOIN_FLOOR). Those draws come
  * from aux (rt_bdpt_aux_stream), every other from sampler. Adds the rays
@@ -207,12 +207,16 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
  * the floor under the sphere, glass, glass, lamp), is the other family
  * that only s = 0 can make: no two neighbouring vertices can be joined.
  * Its only chance is the floor's bounce finding the lamp through the
- * sphere, a few percent of the bounces there, each then worth a lot. The
- * weighted render leaves these paths out of the strategies too and, at
- * the first Lambertian vertex D of a camera subpath that reached it
- * through glass or mirrors alone, sends RT_BDPT_THROUGH_RAYS
- * cosine-distributed rays (splitting) whose glass and mirror chains are
- * followed as above. */
+ * sphere, a few percent of the bounces there, each then worth a lot. So
+ * are its longer kin E (S+ D)+ S+ L, every Lambertian vertex between
+ * glass or mirrors (the floor seen in the ball from a wall that the
+ * camera sees in the ball): rarer, but one such sample is worth the
+ * lamp's whole radiance. The weighted render leaves these paths out of
+ * the strategies too and, at each Lambertian vertex D of a camera
+ * subpath whose vertices so far could none of them be joined to their
+ * neighbours (rt_bdpt_through_vertices in render/bdpt_internal.h), sends
+ * RT_BDPT_THROUGH_RAYS cosine-distributed rays (splitting) whose glass
+ * and mirror chains are followed as above. */
 #define RT_BDPT_THROUGH_RAYS 16
 
 /* The radiance that the camera ray r finds on an emitter's emitting side

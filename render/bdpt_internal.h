@@ -18,7 +18,7 @@
  *   bdpt_seen.c  the families only the camera side can make, estimated
  *                apart: the lamp seen directly or through glass and
  *                mirrors (E S* L), the caustic through the sphere
- *                (E S+ D S+ L).
+ *                (E (S+ D)+ S+ L).
  */
 #ifndef RT_BDPT_INTERNAL_H
 #define RT_BDPT_INTERNAL_H
@@ -165,20 +165,25 @@ void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, 
 
 /* --- the families estimated apart (bdpt_seen.c) ----------------------- */
 
-/* The index jd of the Lambertian vertex D of the camera subpath
- * cam[0..nc) that follows one or more glass or mirror vertices right
- * after the camera (camera, glass, glass, D: the floor seen through the
- * sphere), or 0 if it has none. */
-int rt_bdpt_through_vertex(const rt_bdpt_vertex *cam, int nc);
+/* The Lambertian vertices D of the camera subpath cam[0..nc) that no
+ * join can reach from the camera's side: the subpath starts with glass or
+ * mirrors, and every Lambertian vertex up to D has glass or mirrors on
+ * both sides (camera, glass, glass, D: the floor seen through the sphere;
+ * then glass, D': a wall seen in the ball from that floor). Their indices
+ * go into jd[] in order (room for nc); returns how many. */
+int rt_bdpt_through_vertices(const rt_bdpt_vertex *cam, int nc, int *jd);
 
 /* Whether the path of s = 0 that ends at camera vertex t - 1 (an emitter)
  * is one the weighted render estimates apart: E S* L (the vertices
  * between the camera and the emitter are all glass or mirrors), or
- * E S+ D S+ L with D = cam[jd] (rt_bdpt_through_vertex; jd = 0 for none).
- * The negative-control hooks of ps (ps->neg) keep them in. */
-bool rt_bdpt_estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t, int jd);
+ * E (S+ D)+ S+ L, the last D one of the njd through vertices jd[]
+ * (rt_bdpt_through_vertices) with glass or mirrors alone after it: no
+ * other strategy can make either. The negative-control hooks of ps
+ * (ps->neg) keep them in. */
+bool rt_bdpt_estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t,
+                             const int *jd, int njd);
 
-/* The paths E S+ D S+ L through the Lambertian vertex D = d = cam[jd]:
+/* The paths E (S+ D)+ S+ L through the through vertex D = d = cam[jd]:
  * the mean over RT_BDPT_THROUGH_RAYS cosine-sampled directions at D of
  * what comes back through glass and mirrors, times the subpath's weight
  * up to D; the draws come from aux. Adds the rays traced to *segments. */

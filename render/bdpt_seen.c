@@ -1,7 +1,7 @@
 /* render/bdpt_seen.c - the paths only the camera side can make, each
  * estimated apart from the strategies: the lamp seen directly or through
  * glass and mirrors (E S* L) and the caustic seen through the sphere
- * (E S+ D S+ L); render/bdpt.h says why, this book's #ch-caustic how. */
+ * (E (S+ D)+ S+ L); render/bdpt.h says why, this book's #ch-caustic how. */
 #include <math.h>
 
 #include "mc/onb.h"
@@ -29,19 +29,37 @@ static bool all_chain(const rt_bdpt_vertex *cam, int from, int to)
     return true;
 }
 
-int rt_bdpt_through_vertex(const rt_bdpt_vertex *cam, int nc)
+int rt_bdpt_through_vertices(const rt_bdpt_vertex *cam, int nc, int *jd)
 {
-    int j = 1;
-    while (j < nc && chain_material(cam[j].m))
-        j++;
-    return j >= 2 && j < nc && cam[j].m && cam[j].m->kind == RT_MAT_LAMBERT ? j : 0;
+    /* The camera subpath's longest start in which no two neighbouring
+     * vertices could be joined (the camera counts as joinable: a splat
+     * joins it): glass and mirrors, with Lambertian vertices only
+     * between two of them. Each of those Lambertian vertices ends a
+     * prefix that only s = 0 can continue to an emitter through glass. */
+    int n = 0;
+    if (nc < 2 || !chain_material(cam[1].m))
+        return 0;
+    for (int j = 2; j < nc; j++) {
+        if (chain_material(cam[j].m))
+            continue;
+        if (!cam[j].m || cam[j].m->kind != RT_MAT_LAMBERT || !chain_material(cam[j - 1].m))
+            break;
+        jd[n++] = j;
+    }
+    return n;
 }
 
-bool rt_bdpt_estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t, int jd)
+bool rt_bdpt_estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t,
+                             const int *jd, int njd)
 {
     if (all_chain(cam, 1, t - 1))
         return !ps->neg.seen_twice;
-    return jd > 0 && t - 1 >= jd + 2 && all_chain(cam, jd + 1, t - 1) && !ps->neg.through_twice;
+    /* The last through vertex with glass or mirrors between it and the
+     * emitter at t - 1: every vertex after it chain, and at least one. */
+    for (int i = njd - 1; i >= 0; i--)
+        if (jd[i] + 2 <= t - 1)
+            return all_chain(cam, jd[i] + 1, t - 1) && !ps->neg.through_twice;
+    return false;
 }
 
 /* --- E S* L: the lamp seen directly or through glass and mirrors ------ */
@@ -129,7 +147,7 @@ vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t
     return seen(c, r, max_segments(c), RT_BDPT_SPLITS, rng, segments);
 }
 
-/* --- E S+ D S+ L: the caustic seen through the sphere ----------------- */
+/* --- E (S+ D)+ S+ L: the caustic seen through the sphere ------------ */
 
 /* Cosine sampling at the Lambertian D: BRDF x cos / density is the
  * albedo, whatever the direction. The rays' uniforms are the points of

@@ -74,8 +74,8 @@ typedef struct rt_negative_controls {
     /* render/bdpt.h: the paths E S* L kept in the weighted sum although
      * rt_bdpt_seen_sample adds them too. */
     bool seen_twice;
-    /* render/bdpt.h: the paths E S+ D S+ L kept although the split rays at
-     * D add them too. */
+    /* render/bdpt.h: the paths E (S+ D)+ S+ L kept although the split rays
+     * at D add them too. */
     bool through_twice;
     /* render/sampler.h: with sobol, a 1D request does not move on to the
      * next dimension (read by rt_render_sampler, render/render.h). */

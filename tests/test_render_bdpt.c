@@ -215,7 +215,7 @@ static void test_mis_weights_sum_to_one(void **state)
  * strategy 1 (next-event estimation) twice; each must exceed the
  * threshold somewhere. On book: bdpt that keeps in its strategies the
  * paths it also estimates apart (the lamp seen directly or through glass,
- * E S* L; the caustic seen through the sphere, E S+ D S+ L), each
+ * E S* L; the caustic seen through the sphere, E (S+ D)+ S+ L), each
  * counted twice, must be caught the same way. */
 /* Fails unless every region-channel of a agrees with ref, the mixture:
  * max |t| < thr. */

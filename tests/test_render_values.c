@@ -16,6 +16,9 @@
  *     Cornell box program lets the splatting strategies take, against the
  *     furnace's closed form (this also fills every subpath buffer to the
  *     last vertex under the sanitizers);
+ *   - the paths estimated apart are those only s = 0 can make: on every
+ *     camera subpath that reaches the lamp through the glass ball, the
+ *     rule against the power heuristic's weight of 1;
  *   - the rays traced by the families estimated apart (the lamp seen
  *     through glass and mirrors, the caustic seen through the sphere):
  *     an exact count in a scene where every ray's fate is known, and a
@@ -741,9 +744,10 @@ static void test_seen_rays_exact(void **state)
  * D - 1 (its start is drawn, not traced), one shadow ray per join
  * (s >= 1, t >= 2, s + t - 1 <= D: D (D - 1) / 2 of them), one per splat
  * (s = 2 .. D; (1, 1) is left out), the seen term from the first hit
- * (at most 2 f(D - 1, S - 1) = f(D, S) - 1), and the split rays at the
- * first Lambertian vertex after glass (index jd >= 2):
- * RT_BDPT_THROUGH_RAYS f(D - 2, S). */
+ * (at most 2 f(D - 1, S - 1) = f(D, S) - 1), and the split rays at each
+ * through vertex (rt_bdpt_through_vertices: Lambertian vertices with glass
+ * or mirrors on both sides, so at indices 2, 4, 6, ... at the most):
+ * RT_BDPT_THROUGH_RAYS f(D - jd, S) at jd. */
 static uint64_t sample_core(int d)
 {
     uint64_t D = (uint64_t)d;
@@ -755,8 +759,10 @@ static uint64_t sample_max(int d)
 #if VALUES_BREAK == 4
     return sample_core(d); /* the families' rays left out */
 #else
-    return sample_core(d) + seen_max(d, RT_BDPT_SPLITS) - 1u +
-           (uint64_t)RT_BDPT_THROUGH_RAYS * seen_max(d - 2, RT_BDPT_SPLITS);
+    uint64_t through = 0;
+    for (int jd = 2; jd < d; jd += 2)
+        through += (uint64_t)RT_BDPT_THROUGH_RAYS * seen_max(d - jd, RT_BDPT_SPLITS);
+    return sample_core(d) + seen_max(d, RT_BDPT_SPLITS) - 1u + through;
 #endif
 }
 
@@ -887,11 +893,87 @@ static void test_running_weights_every_join(void **state)
     rt_splats_destroy(splat);
 }
 
+/* The paths the weighted render estimates apart are exactly those only
+ * s = 0 can make. For every camera subpath of the book scene that ends on
+ * the lamp's emitting side (the camera aimed at the glass ball, which
+ * fills the view; 64 x 64 pixels, 64 samples each from pixel streams of
+ * seed 2601, depth 50, roulette off and on), the path with
+ * s = 0 is estimated apart (rt_bdpt_estimated_apart over the subpath's
+ * through vertices) if and only if its power-heuristic weight
+ * (rt_bdpt_join_weight) is exactly 1: dropped with any other strategy
+ * able to make it, the render would lose that strategy's share; kept
+ * although no other can, the split rays would add it twice. At least 10
+ * of those paths must have two Lambertian vertices or more (E S+ D S+ D
+ * S+ L: the ball's view of a floor that sees the lamp through the ball).
+ * Negative control: the rule that knows the first through vertex alone
+ * must disagree with the weights on some path. */
+static void test_estimated_apart_only_s0(void **state)
+{
+    negctl *nc = *state;
+    enum { PW = 64, PSPP = 64 };
+    uint64_t seed = mc_test_seed(2601u);
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    /* The glass ball filling the view (centre (190, 90, 190), radius 90). */
+    cp.lookat = vec3_make(190.0, 90.0, 190.0);
+    cp.vfov_deg = 11.0;
+    rt_camera cam = rt_camera_make(cp, PW, PW);
+    uint64_t ends = 0, apart = 0, longer = 0, first_only_wrong = 0;
+    for (int rr = 0; rr < 2; rr++) {
+        rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+        ps.russian_roulette = rr == 1;
+        rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam);
+        for (uint64_t idx = 0; idx < PW * PW; idx++) {
+            rt_sampler sampler = rt_sampler_from_rng(mc_rng_derive(seed, idx));
+            for (uint64_t j = 0; j < PSPP; j++) {
+                rt_bdpt_vertex v[RT_BDPT_MAX_DEPTH + 1], light[RT_BDPT_MAX_DEPTH];
+                v[0] = (rt_bdpt_vertex){RT_BDPT_CAMERA, cam.origin, c.forward, c.forward, true,
+                                        false, NULL, -1, vec3_make(1.0, 1.0, 1.0)};
+                rt_ray r = rt_camera_ray(&cam, (double)(idx % PW) + mc_rng_uniform(&sampler.rng),
+                                         (double)(idx / PW) + mc_rng_uniform(&sampler.rng));
+                uint64_t seg = 0;
+                int n = rt_bdpt_walk(&c, r, v[0].beta, v, 1, ps.max_depth + 1, 0, &sampler, &seg);
+                int nl = rt_bdpt_light_walk(&c, &sampler, light, ps.max_depth, &seg);
+                rt_bdpt_subpath_pdfs sp;
+                rt_bdpt_cache_pdfs(&c, light, nl, v, n, &sp);
+                int jd[RT_BDPT_MAX_DEPTH + 1];
+                int njd = rt_bdpt_through_vertices(v, n, jd);
+                for (int t = 2; t <= n; t++) {
+                    const rt_bdpt_vertex *z = &v[t - 1];
+                    if (!z->m || z->m->kind != RT_MAT_LIGHT || !z->front_face)
+                        continue;
+                    ends++;
+                    bool only_s0 = rt_bdpt_join_weight(&c, &sp, light, 0, v, t) == 1.0;
+                    bool is_apart = rt_bdpt_estimated_apart(&ps, v, t, jd, njd);
+                    if (is_apart != only_s0)
+                        fail_msg("pixel %llu sample %llu, t = %d: estimated apart %d, weight 1 %d",
+                                 (unsigned long long)idx, (unsigned long long)j, t, is_apart,
+                                 only_s0);
+                    apart += is_apart;
+                    longer += is_apart && njd >= 2 && jd[1] < t - 1;
+                    first_only_wrong += rt_bdpt_estimated_apart(&ps, v, t, jd, njd < 1 ? njd : 1) != only_s0;
+                }
+            }
+        }
+    }
+    printf("book, %d x %d pixels x %d samples, twice: %llu camera subpaths on the lamp, %llu of them "
+           "estimated apart, %llu with two Lambertian vertices or more; the first through vertex alone "
+           "disagrees on %llu\n",
+           PW, PW, PSPP, (unsigned long long)ends, (unsigned long long)apart,
+           (unsigned long long)longer, (unsigned long long)first_only_wrong);
+    assert_true(longer >= 10);
+    if (!negctl_record(nc, "the first through vertex alone", "estimated apart iff only s = 0",
+                       first_only_wrong > 0))
+        fail_msg("the rule of the first through vertex alone agreed with the weights");
+    rt_scene_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_mis_weights_by_hand),
         cmocka_unit_test(test_running_weights_every_join),
+        cmocka_unit_test(test_estimated_apart_only_s0),
         cmocka_unit_test(test_camera_importance_and_density),
         cmocka_unit_test(test_furnace_at_largest_depth),
         cmocka_unit_test(test_seen_rays_exact),
