@@ -115,7 +115,7 @@ static options parse(int argc, char **argv)
         {"-o", APP_STRING, &o.out, "output image .png, .ppm or .pfm (linear) (default cornell.png)", NULL, 0, 0},
         {"--gamma", APP_CHOICE, &o.gamma, "display encoding of .png and .ppm (default 2)", rt_gamma_names, 0, 0},
         {"--csv", APP_FLAG, &o.csv, "print the mean linear RGB as CSV", NULL, 0, 0},
-        {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments, for lighttrace and bdpt after 1 (default off)", NULL, 0, 0},
+        {"--roulette", APP_FLAG, &o.roulette, "Russian roulette after 3 segments (default off)", NULL, 0, 0},
     };
     app_parse(prog, "cornell_box [--scene S] [--width W] [--spp N] [--max-depth D] "
                     "[--strategy S] [--sampler S] [--threads T] [--seed S] [-o FILE] [--gamma G] "

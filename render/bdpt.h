@@ -64,13 +64,15 @@
 #define RT_BDPT_MAX_DEPTH 64
 
 /* With Russian roulette (rt_path_settings.russian_roulette), both
- * subpaths play it from their first bounce on, where the path tracer
- * waits three segments (rt_path_settings.rr_start): every vertex of a
- * subpath costs a shadow ray for each vertex of the other, so a vertex
- * saved early saves more rays than in a path tracer. (Chosen from trial
- * renders of the book's scene; `make bench` and this book's #ch-caustic
- * measure the result, not this choice against the other.) */
-#define RT_BDPT_RR_START 1
+ * subpaths play it after their first RT_BDPT_RR_START segments, as the
+ * path tracer does after rt_path_settings.rr_start. Every vertex of a
+ * subpath costs a shadow ray for each vertex of the other, so stopping
+ * early saves more rays than in a path tracer, but it also loses the most
+ * strategies: starting at 1, 2, 3, 4 segments, error times instructions
+ * (600x600 renders at 32 spp against the 1024-spp references, Callgrind's
+ * count at 120x120, 8 spp) was 1, 0.93, 0.92, 0.92 on the book's scene
+ * and 1, 0.86, 0.80, 0.81 on lambert (docs/performance.md). */
+#define RT_BDPT_RR_START 3
 
 /* The weighted render also plays roulette on its shadow rays: a join or
  * splat worth less than this to a pixel sample (in every channel, if
