@@ -927,8 +927,7 @@ static void test_estimated_apart_only_s0(void **state)
             rt_sampler sampler = rt_sampler_from_rng(mc_rng_derive(seed, idx));
             for (uint64_t j = 0; j < PSPP; j++) {
                 rt_bdpt_vertex v[RT_BDPT_MAX_DEPTH + 1], light[RT_BDPT_MAX_DEPTH];
-                v[0] = (rt_bdpt_vertex){RT_BDPT_CAMERA, cam.origin, c.forward, c.forward, true,
-                                        false, NULL, -1, vec3_make(1.0, 1.0, 1.0)};
+                v[0] = camera_vertex(&c);
                 rt_ray r = rt_camera_ray(&cam, (double)(idx % PW) + mc_rng_uniform(&sampler.rng),
                                          (double)(idx / PW) + mc_rng_uniform(&sampler.rng));
                 uint64_t seg = 0;
