@@ -37,3 +37,14 @@ $(REF)/%-$(call ref_tag,$(1))-b.pfm: | $(B)/bin/cornell_box
 	$$(call ref_render,1002,$(1))
 endef
 $(foreach w,$(REF_WIDTH),$(eval $(call ref_rules,$(w))))
+
+# make book-program BOOK_SRC=DIR: the book's own program, from a checkout
+# of its code at v1.123.0 that the user makes (tools/book_program.sh says
+# how), built for the book's 600 x 600 render at 100 spp. When it is there,
+# make bench times it on this machine and measures every x_book figure
+# against that time instead of the constant 68.3 s of another machine.
+BOOK_PROGRAM := $(B)/book-program/book
+.PHONY: book-program
+book-program:
+	@test -n "$(BOOK_SRC)" || { echo "make book-program: BOOK_SRC=DIR is needed, a checkout of the book's code: git clone --branch v1.123.0 https://github.com/petershirley/raytracingtherestofyourlife" >&2; exit 2; }
+	@sh tools/book_program.sh "$(BOOK_SRC)" $(BOOK_PROGRAM)

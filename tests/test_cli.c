@@ -767,6 +767,68 @@ static void test_cli_negative_controls(void **state)
     assert_true(all);
 }
 
+/* bench_render --book-program: the program named is run three times and
+ * the median of its times replaces the constant of another machine in the
+ * x_book figures; a program that cannot be started, or fails, is bad
+ * input. Without it the header says the time is that constant. A fake
+ * book program that logs each run and sleeps 0.3 s stands in for the
+ * book's (the time is checked only from below: a sleep cannot be
+ * shorter). */
+static void test_cli_bench_book_program(void **state)
+{
+    (void)state;
+    char bench[1024], dir[] = "/tmp/mcbox-book-XXXXXX", prog[128], log[128], body[512], why[512];
+    snprintf(bench, sizeof bench, "%s/bench/bench_render", mc_test_build_dir());
+    assert_int_equal(access(bench, X_OK), 0);
+    assert_non_null(mkdtemp(dir));
+    snprintf(prog, sizeof prog, "%s/book", dir);
+    snprintf(log, sizeof log, "%s/runs", dir);
+    snprintf(body, sizeof body, "echo run >> '%s'; sleep 0.3; echo P3", log);
+    write_script(prog, body);
+    /* The user's own settings must not turn on the 600x600 error tables. */
+    unsetenv("MC_BOOK_PROGRAM");
+    unsetenv("MC_REF_BOOK");
+    unsetenv("MC_REF_LAMBERT");
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    const char *timed[] = {"--book-program", prog, "--width", "8", "--spp", "1", "--max-threads", "1",
+                           NULL};
+    run_prog(bench, timed, r);
+    assert_int_equal(r->status, 0);
+    FILE *f = fopen(log, "r");
+    assert_non_null(f);
+    int runs = 0;
+    for (int c; (c = fgetc(f)) != EOF;)
+        runs += c == '\n';
+    fclose(f);
+    assert_int_equal(runs, 3);
+    const char *key = "the book's program: ", *at = strstr(r->out, key);
+    assert_non_null(at);
+    char *end;
+    double seconds = strtod(at + strlen(key), &end);
+    printf("bench_render timed the fake book program: %.3f s, after %d runs\n", seconds, runs);
+    assert_true(seconds >= 0.3);
+    assert_int_equal(strncmp(end, " s (timed here", 14), 0);
+
+    const char *constant[] = {"--width", "8", "--spp", "1", "--max-threads", "1", NULL};
+    run_prog(bench, constant, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(strstr(r->out, "the book's program: 68.3 s (a constant from another machine)"));
+
+    /* Bad input: a program that fails, and one that is not there. */
+    write_script(prog, "exit 3");
+    run_prog(bench, timed, r);
+    assert_null(judge_bad("bench_render", r, why, sizeof why));
+    assert_non_null(strstr(r->err, "failed"));
+    unlink(prog);
+    run_prog(bench, timed, r);
+    assert_null(judge_bad("bench_render", r, why, sizeof why));
+    assert_non_null(strstr(r->err, "cannot be started"));
+    free(r);
+    unlink(log);
+    rmdir(dir);
+}
+
 static int report(void **state)
 {
     (void)state;
@@ -781,7 +843,7 @@ static int by_name(const void *a, const void *b)
 int main(void)
 {
     static char *paths[MAX_PROGRAMS];
-    static struct CMUnitTest tests[MAX_PROGRAMS + 5];
+    static struct CMUnitTest tests[MAX_PROGRAMS + 6];
     static char names[MAX_PROGRAMS][96];
     size_t n = 0;
     /* Every program and every benchmark follows the same CLI rules. */
@@ -815,11 +877,13 @@ int main(void)
     tests[3] = (struct CMUnitTest){"test_cli_long_runs_announce", test_cli_long_runs_announce, NULL, NULL,
                                    NULL};
     tests[4] = (struct CMUnitTest){"test_cli_bad_input_matrix", test_cli_bad_input_matrix, NULL, NULL, NULL};
+    tests[5] = (struct CMUnitTest){"test_cli_bench_book_program", test_cli_bench_book_program, NULL, NULL,
+                                   NULL};
     for (size_t i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[i], "test_cli_%s", strrchr(paths[i], '/') + 1);
-        tests[i + 5] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
+        tests[i + 6] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
     }
-    int rc = _cmocka_run_group_tests("test_cli", tests, n + 5, NULL, report);
+    int rc = _cmocka_run_group_tests("test_cli", tests, n + 6, NULL, report);
     for (size_t i = 0; i < n; i++)
         free(paths[i]);
     return rc;
