@@ -46,7 +46,7 @@
  * A quicker run: MC_BENCH_QUICK=1 (or --quick) renders 10 samples per
  * pixel instead of 100; --spp N and --max-threads T override.
  */
-#define _POSIX_C_SOURCE 200809L /* fork, execl, waitpid, clock_gettime */
+#define _POSIX_C_SOURCE 200809L /* fork, execl, waitpid */
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -54,10 +54,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/timing.h"
 #include "render/bdpt.h"
 #include "render/render.h"
 #include "render/scenes.h"
@@ -222,10 +222,8 @@ static bool error_rows_measure(const rt_scene *scene, rt_camera_params cp, uint6
             }
         }
     }
-    for (size_t i = 0; i < NROWS; i++) { /* the median: the middle one, in either order */
-        qsort(times[i], NROUNDS, sizeof times[i][0], cmp_desc);
-        seconds[i] = times[i][NROUNDS / 2];
-    }
+    for (size_t i = 0; i < NROWS; i++)
+        seconds[i] = app_median(times[i], NROUNDS);
     return true;
 }
 
@@ -234,8 +232,7 @@ static bool error_rows_measure(const rt_scene *scene, rt_camera_params cp, uint6
  * does not exit with status 0. */
 static double time_program(const char *path)
 {
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
+    double t0 = app_wall_seconds();
     pid_t pid = fork();
     if (pid == 0) {
         int devnull = open("/dev/null", O_WRONLY);
@@ -248,7 +245,7 @@ static double time_program(const char *path)
     while (pid > 0 && waitpid(pid, &status, 0) < 0)
         if (errno != EINTR)
             pid = -1;
-    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double seconds = app_wall_seconds() - t0;
     if (pid < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         fprintf(stderr, "%s: the book's program %s: %s\n", prog, path,
                 pid < 0                       ? "cannot be run"
@@ -257,7 +254,7 @@ static double time_program(const char *path)
                                               : "failed");
         return (double)NAN;
     }
-    return (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    return seconds;
 }
 
 /* The book's program's time: the median of NROUNDS runs of path, or the
@@ -272,8 +269,7 @@ static bool book_time_get(const char *path, book_time *bt)
     for (int i = 0; i < NROUNDS; i++)
         if (isnan(t[i] = time_program(path)))
             return false;
-    qsort(t, NROUNDS, sizeof t[0], cmp_desc);
-    *bt = (book_time){t[NROUNDS / 2], true};
+    *bt = (book_time){app_median(t, NROUNDS), true};
     return true;
 }
 
@@ -393,18 +389,15 @@ int main(int argc, char **argv)
               argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
     if (quick && spp == 100)
         spp = 10;
+    book_time bt;
+    if (!book_time_get(book_program, &bt))
+        return 2; /* a bad --book-program: bad input */
     rt_camera_params cp;
     rt_scene *scene = rt_scene_named("book", &cp);
     rt_image *img = rt_image_create(width, width);
     if (!scene || !img) {
         fprintf(stderr, "%s: out of memory\n", prog);
         return 1;
-    }
-    book_time bt;
-    if (!book_time_get(book_program, &bt)) { /* a bad --book-program: bad input */
-        rt_image_destroy(img);
-        rt_scene_destroy(scene);
-        return 2;
     }
     double book_paths_per_s = 600.0 * 600.0 * 100.0 / bt.seconds;
     printf("book scene %dx%d, %llu spp, max depth 50, mixture; the book's program: %.1f s (%s), "

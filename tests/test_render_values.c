@@ -950,7 +950,8 @@ static void test_estimated_apart_only_s0(void **state)
                                  only_s0);
                     apart += is_apart;
                     longer += is_apart && njd >= 2 && jd[1] < t - 1;
-                    first_only_wrong += rt_bdpt_estimated_apart(&ps, v, t, jd, njd < 1 ? njd : 1) != only_s0;
+                    first_only_wrong +=
+                        rt_bdpt_estimated_apart(&ps, v, t, jd, njd < 1 ? njd : 1) != only_s0;
                 }
             }
         }
