@@ -23,6 +23,7 @@
 #ifndef RT_BDPT_INTERNAL_H
 #define RT_BDPT_INTERNAL_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -36,6 +37,29 @@ static inline bool rt_bdpt_camera_dir(const rt_bdpt_ctx *c, vec3 p, vec3 *dir, d
     *dir = vec3_normalize(vec3_sub(p, c->camera->origin));
     *cos_theta = vec3_dot(*dir, c->forward);
     return *cos_theta > 0.0;
+}
+
+/* The segment from the point a to the point b, as each of its readers
+ * would compute it alone: the densities at its two ends, a join's
+ * geometry factor and its shadow ray. d = b - a, its squared length, its
+ * length, and the unit direction d / length (vec3_normalize's numbers).
+ * Read from b, the direction is -dir and the difference a - b is -d:
+ * negation is exact, and so are the signs it gives a dot product, so one
+ * computation serves both ends bit for bit, with one square root and one
+ * division where each reader had its own. */
+typedef struct rt_bdpt_segment {
+    vec3 d, dir;
+    double dist_sq, dist;
+} rt_bdpt_segment;
+
+static inline rt_bdpt_segment rt_bdpt_segment_make(vec3 a, vec3 b)
+{
+    rt_bdpt_segment g;
+    g.d = vec3_sub(b, a);
+    g.dist_sq = vec3_length_sq(g.d);
+    g.dist = sqrt(g.dist_sq);
+    g.dir = vec3_scale(g.d, 1.0 / g.dist);
+    return g;
 }
 
 /* --- the subpaths (bdpt_walk.c) --------------------------------------- */
@@ -108,6 +132,13 @@ double rt_bdpt_join_weight_running(const rt_bdpt_ctx *c, const rt_bdpt_subpath_p
                                    const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam,
                                    int t);
 
+/* rt_bdpt_join_weight_running with the segment from light[s - 1] to
+ * cam[t - 1] already made (g, unread when s = 0): the same number, the
+ * join's own square root shared. */
+double rt_bdpt_join_weight_along(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
+                                 const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam,
+                                 int t, const rt_bdpt_segment *g);
+
 /* The record of c->audit: joins weighed, and the largest relative
  * difference |running - reference| / reference (absolute where the
  * reference is 0). */
@@ -119,14 +150,14 @@ typedef struct rt_bdpt_weight_audit {
 /* --- the joins (bdpt_join.c) ------------------------------------------ */
 
 /* The joins of one sample and their shadow rays, traced four at a time
- * through the scene's four-ray test (rt_scene_hit4) once four are
- * waiting, or one by one with c->one_ray_at_a_time. Each entry adds its
- * value, if its ray is clear (or it has none), to the sample's sum L (a
- * join) or to a pixel's splat sums (a splat), and the entries are added in
- * the order they were made: the same sums, bit for bit, as tracing each
- * ray when its join is made. A ray clear over (tmin, tmax) is one whose
- * nearest hit, sought out to the largest tmax of the four, is not nearer
- * than tmax: the same answer as rt_scene_hit's. */
+ * through the scene's four-ray shadow test (rt_scene_occluded4) once four
+ * are waiting, or one by one with c->one_ray_at_a_time. Each entry adds
+ * its value, if its ray is clear (or it has none), to the sample's sum L
+ * (a join) or to a pixel's splat sums (a splat), and the entries are
+ * added in the order they were made: the same sums, bit for bit, as
+ * tracing each ray when its join is made. A ray clear over (tmin, tmax)
+ * is one that meets nothing nearer than its tmax: the same answer as
+ * rt_scene_hit's. */
 #define RT_BDPT_QUEUE 16
 typedef struct rt_bdpt_shadows {
     rt_ray r[RT_LANES];

@@ -42,18 +42,11 @@ static void flush(const rt_bdpt_ctx *c, rt_bdpt_shadows *q)
 {
     unsigned blocked = 0u;
     if (q->n_rays > 0) {
-        double far = q->tmax[0];
-        for (int k = 1; k < q->n_rays; k++)
-            far = q->tmax[k] > far ? q->tmax[k] : far;
         for (int k = q->n_rays; k < RT_LANES; k++) {
             q->r[k] = q->r[0];
             q->tmax[k] = q->tmax[0];
         }
-        rt_hit h[RT_LANES];
-        unsigned hit = rt_scene_hit4(c->scene, q->r, far, h);
-        for (int k = 0; k < q->n_rays; k++)
-            if ((hit >> k) & 1u && h[k].t < q->tmax[k])
-                blocked |= 1u << k;
+        blocked = rt_scene_occluded4(c->scene, q->r, q->tmax);
     }
     for (int i = 0; i < q->n; i++) {
         if (q->ray[i] >= 0 && (blocked >> q->ray[i]) & 1u)
@@ -71,17 +64,16 @@ static void flush(const rt_bdpt_ctx *c, rt_bdpt_shadows *q)
 }
 
 /* Queues v, to add to L (px = SIZE_MAX) or to pixel px's splat sums, if
- * nothing lies between the points a and b (a NULL: no ray, always). */
+ * nothing lies along the segment g from the point a (a NULL: no ray,
+ * always). */
 static void queue(const rt_bdpt_ctx *c, rt_bdpt_shadows *q, vec3 v, size_t px, const vec3 *a,
-                  const vec3 *b)
+                  const rt_bdpt_segment *g)
 {
     int ray = -1;
     if (a) {
-        vec3 d = vec3_sub(*b, *a);
-        double dist = vec3_length(d);
         ray = q->n_rays++;
-        q->r[ray] = rt_ray_make(*a, vec3_scale(d, 1.0 / dist));
-        q->tmax[ray] = dist - rt_scene_t_min(c->scene);
+        q->r[ray] = rt_ray_make(*a, g->dir);
+        q->tmax[ray] = g->dist - rt_scene_t_min(c->scene);
         ++*q->segments;
     }
     q->v[q->n] = v;
@@ -143,17 +135,19 @@ void rt_bdpt_join(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp, const rt
     vec3 fy = end_factor(y, z->p), fz = end_factor(z, y->p);
     if (is_black(fy) || is_black(fz))
         return;
-    vec3 d = vec3_sub(z->p, y->p);
-    double dist_sq = vec3_length_sq(d);
-    double g = fabs(vec3_dot(y->ng, d)) * fabs(vec3_dot(z->ng, d)) / (dist_sq * dist_sq);
+    /* The segment from y to z: the geometry factor, the weight's two
+     * densities and the shadow ray all read it. */
+    rt_bdpt_segment seg = rt_bdpt_segment_make(y->p, z->p);
+    double g = fabs(vec3_dot(y->ng, seg.d)) * fabs(vec3_dot(z->ng, seg.d)) /
+               (seg.dist_sq * seg.dist_sq);
     if (!(g > 0.0))
         return;
     v = vec3_scale(vec3_mul(vec3_mul(y->beta, fy), vec3_mul(z->beta, fz)), g);
     if (sp)
-        v = vec3_scale(v, rt_bdpt_join_weight_running(c, sp, light, s, cam, t));
+        v = vec3_scale(v, rt_bdpt_join_weight_along(c, sp, light, s, cam, t, &seg));
     double f = join_roulette(v, 1.0, aux);
     if (f != 0.0)
-        queue(c, q, vec3_scale(v, f), SIZE_MAX, &y->p, &z->p);
+        queue(c, q, vec3_scale(v, f), SIZE_MAX, &y->p, &seg);
 }
 /* END SNIPPET bdpt_join */
 
@@ -173,19 +167,18 @@ void rt_bdpt_splat_to_camera(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, 
     vec3 fy = end_factor(y, cam0->p);
     if (is_black(fy))
         return;
-    vec3 d = vec3_sub(cam0->p, y->p);
-    double dist_sq = vec3_length_sq(d);
-    double g = fabs(vec3_dot(y->ng, d)) / (sqrt(dist_sq) * dist_sq);
+    rt_bdpt_segment seg = rt_bdpt_segment_make(y->p, cam0->p);
+    double g = fabs(vec3_dot(y->ng, seg.d)) / (seg.dist * seg.dist_sq);
     if (!(g > 0.0))
         return;
     vec3 v = vec3_scale(vec3_mul(y->beta, fy), g * we);
     if (sp)
-        v = vec3_scale(v, rt_bdpt_join_weight_running(c, sp, light, s, cam0, 1));
+        v = vec3_scale(v, rt_bdpt_join_weight_along(c, sp, light, s, cam0, 1, &seg));
     /* A splat is divided by the number of light subpaths, one per pixel
      * sample: to a pixel sample it is worth v over the pixel count. */
     double npix = (double)c->camera->width * (double)c->camera->height;
     double f = join_roulette(v, 1.0 / npix, aux);
     if (f != 0.0)
-        queue(c, q, vec3_scale(v, f), px, &y->p, &cam0->p);
+        queue(c, q, vec3_scale(v, f), px, &y->p, &seg);
 }
 /* END SNIPPET bdpt_splat */

@@ -42,20 +42,21 @@ static bool joinable(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int i, int n
 typedef enum role { AS_LIGHT, AS_CAMERA, AS_ORIGIN } role;
 
 /* The density per unit solid angle with which `from` sends its next ray
- * toward `to` in role r: the film's for the camera, cosine emission from
- * the start of a light subpath, a Lambertian surface's sampling density;
- * 0 through a specular vertex (the caller counts that as 1). */
-static double dir_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r, vec3 to)
+ * along the unit direction dir (toward the next vertex) in role r: the
+ * film's for the camera, cosine emission from the start of a light
+ * subpath, a Lambertian surface's sampling density; 0 through a specular
+ * vertex (the caller counts that as 1). */
+static double dir_pdf_along(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r, vec3 dir)
 {
     if (from->kind == RT_BDPT_CAMERA) {
-        vec3 dir;
-        double cos_theta;
-        if (!rt_bdpt_camera_dir(c, to, &dir, &cos_theta))
+        /* rt_bdpt_camera_dir's cosine and test (from is the camera's
+         * origin). */
+        double cos_theta = vec3_dot(dir, c->forward);
+        if (!(cos_theta > 0.0))
             return 0.0;
         double film = c->pixel_area * (double)c->camera->width * (double)c->camera->height;
         return 1.0 / (film * cos_theta * cos_theta * cos_theta);
     }
-    vec3 dir = vec3_normalize(vec3_sub(to, from->p));
     if (r == AS_ORIGIN || from->kind == RT_BDPT_LIGHT) {
         double cos_e = vec3_dot(from->kind == RT_BDPT_LIGHT ? from->ng : from->ns, dir);
         return cos_e > 0.0 ? cos_e * MC_INV_PI : 0.0;
@@ -63,6 +64,20 @@ static double dir_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r, 
     if (from->delta || !from->m || from->m->kind != RT_MAT_LAMBERT)
         return 0.0;
     return rt_cosine_value(from->ns, dir);
+}
+
+/* dir_pdf_along toward the point `to`. */
+static double dir_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r, vec3 to)
+{
+    vec3 dir;
+    if (from->kind == RT_BDPT_CAMERA) {
+        double cos_theta;
+        if (!rt_bdpt_camera_dir(c, to, &dir, &cos_theta))
+            return 0.0;
+    } else {
+        dir = vec3_normalize(vec3_sub(to, from->p));
+    }
+    return dir_pdf_along(c, from, r, dir);
 }
 
 /* A density per unit solid angle at `from` as a density per unit area at
@@ -165,18 +180,45 @@ static double area_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r,
     return remap0(to_area(dir_pdf(c, from, r, to->p), from->p, to));
 }
 
+/* area_pdf over the segment g between the two vertices, the direction
+ * from `from` toward `to` given (g.dir or its negation): to_area's
+ * numbers, |cos| at `to` read off g.d, whose sign does not matter. */
+static double area_pdf_along(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r,
+                             const rt_bdpt_vertex *to, vec3 dir, const rt_bdpt_segment *g)
+{
+    double pdf_dir = dir_pdf_along(c, from, r, dir);
+    return remap0(pdf_dir * fabs(vec3_dot(to->ng, g->d)) / (g->dist * g->dist_sq));
+}
+
 void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int nl,
                         const rt_bdpt_vertex *cam, int nc, rt_bdpt_subpath_pdfs *sp)
 {
+    /* Each segment gives the densities at both its ends: lf[i + 1] and
+     * lr[i] between light vertices i and i + 1, cf[j + 1] and cr[j]
+     * between camera vertices j and j + 1. */
     for (int i = 0; i < nl; i++) {
-        sp->lf[i] = i == 0 ? remap0(rt_bdpt_origin_pdf(c, &light[0]))
-                           : area_pdf(c, &light[i - 1], i == 1 ? AS_ORIGIN : AS_LIGHT, &light[i]);
-        sp->lr[i] = i + 1 < nl ? area_pdf(c, &light[i + 1], AS_CAMERA, &light[i]) : 1.0;
+        if (i == 0)
+            sp->lf[0] = remap0(rt_bdpt_origin_pdf(c, &light[0]));
+        if (i + 1 < nl) {
+            rt_bdpt_segment g = rt_bdpt_segment_make(light[i].p, light[i + 1].p);
+            sp->lf[i + 1] = area_pdf_along(c, &light[i], i == 0 ? AS_ORIGIN : AS_LIGHT,
+                                           &light[i + 1], g.dir, &g);
+            sp->lr[i] = area_pdf_along(c, &light[i + 1], AS_CAMERA, &light[i], vec3_neg(g.dir), &g);
+        } else {
+            sp->lr[i] = 1.0;
+        }
         sp->jl[i] = i == 0 || joinable(c, &light[i], i, i + 2);
     }
     for (int j = 0; j < nc; j++) {
-        sp->cf[j] = j == 0 ? 1.0 : area_pdf(c, &cam[j - 1], AS_CAMERA, &cam[j]);
-        sp->cr[j] = j + 1 < nc ? area_pdf(c, &cam[j + 1], AS_LIGHT, &cam[j]) : 1.0;
+        if (j == 0)
+            sp->cf[0] = 1.0;
+        if (j + 1 < nc) {
+            rt_bdpt_segment g = rt_bdpt_segment_make(cam[j].p, cam[j + 1].p);
+            sp->cf[j + 1] = area_pdf_along(c, &cam[j], AS_CAMERA, &cam[j + 1], g.dir, &g);
+            sp->cr[j] = area_pdf_along(c, &cam[j + 1], AS_LIGHT, &cam[j], vec3_neg(g.dir), &g);
+        } else {
+            sp->cr[j] = 1.0;
+        }
         sp->jc[j] = j == 0 || joinable(c, &cam[j], 1, 3);
     }
     /* The running sums. Strategy r joins x[r-1] and x[r], so on the light
@@ -251,7 +293,8 @@ double rt_bdpt_join_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
  * scaled term. */
 /* BEGIN SNIPPET bdpt_weight_running */
 static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
-                             const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t)
+                             const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t,
+                             const rt_bdpt_segment *g)
 {
     const rt_bdpt_vertex *z = &cam[t - 1];
     double splat = s + t == 3 ? RT_BDPT_DIRECT_SPLAT_SCALE * RT_BDPT_DIRECT_SPLAT_SCALE : 1.0;
@@ -272,11 +315,12 @@ static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *s
     const rt_bdpt_vertex *y = &light[s - 1];
     if (!(sp->jl[s - 1] && sp->jc[t - 1]))
         return 0.0;
-    double ql = area_pdf(c, z, AS_CAMERA, y) / sp->lf[s - 1];
+    /* g runs from y to z: z sees y along -g.dir. */
+    double ql = area_pdf_along(c, z, AS_CAMERA, y, vec3_neg(g->dir), g) / sp->lf[s - 1];
     bool ok_l = s == 1 || (sp->jl[s - 2] && sp->jl[s - 1]);
     double sum = ql * ql * ((ok_l ? 1.0 : 0.0) + (s >= 2 ? sp->la[s - 2] : 0.0));
     if (t >= 2) {
-        double qc = area_pdf(c, y, s == 1 ? AS_ORIGIN : AS_LIGHT, z) / sp->cf[t - 1];
+        double qc = area_pdf_along(c, y, s == 1 ? AS_ORIGIN : AS_LIGHT, z, g->dir, g) / sp->cf[t - 1];
         bool ok_c = sp->jc[t - 1] && sp->jc[t - 2];
         sum += qc * qc * ((ok_c ? (t == 2 ? splat : 1.0) : 0.0) + sp->ce[t - 2]);
     }
@@ -289,9 +333,19 @@ double rt_bdpt_join_weight_running(const rt_bdpt_ctx *c, const rt_bdpt_subpath_p
                                    const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam,
                                    int t)
 {
+    rt_bdpt_segment g;
+    if (s > 0)
+        g = rt_bdpt_segment_make(light[s - 1].p, cam[t - 1].p);
+    return rt_bdpt_join_weight_along(c, sp, light, s, cam, t, s > 0 ? &g : NULL);
+}
+
+double rt_bdpt_join_weight_along(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
+                                 const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam,
+                                 int t, const rt_bdpt_segment *g)
+{
     if (s + t <= 2 || c->ps->neg.mis_double)
         return rt_bdpt_join_weight(c, sp, light, s, cam, t);
-    double w = running_weight(c, sp, light, s, cam, t);
+    double w = running_weight(c, sp, light, s, cam, t, g);
     if (c->audit) {
         double ref = rt_bdpt_join_weight(c, sp, light, s, cam, t);
         double diff = ref != 0.0 ? fabs(w - ref) / ref : fabs(w);

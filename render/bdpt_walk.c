@@ -42,6 +42,9 @@ int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, i
     const rt_scene *s = c->scene;
     const rt_path_settings *ps = c->ps;
     vec3 start = beta;
+    /* A camera subpath starts at beta 1, where roulette's beta / start is
+     * beta itself: the three divisions by 1 give the same bits. */
+    bool unit_start = start.x == 1.0 && start.y == 1.0 && start.z == 1.0;
     for (int k = 0; n < max_n; k++) {
         rt_hit h;
         ++*segments;
@@ -67,7 +70,9 @@ int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, i
         double sp = rt_material_scattering_pdf(m, &h, dir), pd = rt_cosine_value(sr.normal, dir);
         if (!(sp > 0.0 && pd > 0.0))
             break;
-        beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp / pd);
+        /* A Lambertian surface samples its own cosine density: sp and pd
+         * are the same product, their ratio exactly 1. */
+        beta = vec3_scale(vec3_mul(beta, sr.attenuation), sp == pd ? 1.0 : sp / pd);
         r = rt_ray_make(h.p, dir);
         /* Russian roulette as in render/integrator.c, on the throughput
          * since the subpath's start: it changes how often a subpath goes
@@ -76,7 +81,7 @@ int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, i
          * segments, not the path tracer's rr_start. */
         if (ps->russian_roulette && k + 1 >= RT_BDPT_RR_START) {
             double q = vec3_max_component(
-                vec3_make(beta.x / start.x, beta.y / start.y, beta.z / start.z));
+                unit_start ? beta : vec3_make(beta.x / start.x, beta.y / start.y, beta.z / start.z));
             q = q < 0.95 ? q : 0.95;
             if (!(q > 0.0) || rt_sampler_1d(sampler) >= q)
                 break;

@@ -179,6 +179,23 @@ unsigned rt_leaf_lanes_hit(const rt_leaf_tests *t, const rt_leaf_lanes *ll, cons
 }
 /* END SNIPPET hit4_dispatch */
 
+unsigned rt_leaf_lanes_occluded(const rt_leaf_tests *t, const rt_leaf_lanes *ll, const rt_bvh *bvh,
+                                const rt_prim *prims, const rt_ray r[RT_LANES], double tmin,
+                                const double tmax[RT_LANES])
+{
+    if (t && t->occluded4 && ll && tmin >= 0.0)
+        return t->occluded4(ll, prims, r, tmin, tmax);
+    double far = tmax[0];
+    for (int k = 1; k < RT_LANES; k++)
+        far = tmax[k] > far ? tmax[k] : far;
+    rt_hit h[RT_LANES];
+    unsigned hit = rt_leaf_lanes_hit(t, ll, bvh, prims, r, tmin, far, h), blocked = 0u;
+    for (int k = 0; k < RT_LANES; k++)
+        if ((hit >> k) & 1u && h[k].t < tmax[k])
+            blocked |= 1u << k;
+    return blocked;
+}
+
 bool rt_leaf_lanes_hit1(const rt_leaf_tests *t, const rt_leaf_lanes *ll, const rt_bvh *bvh,
                         const rt_prim *prims, const rt_ray *r, double tmin, double tmax,
                         rt_hit *h)

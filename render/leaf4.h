@@ -112,12 +112,17 @@ void rt_leaf_lanes_destroy(rt_leaf_lanes *ll);
 /* The four-wide tests of a root leaf's lanes, each NULL when there is
  * none (the zero value: the BVH alone). hit4: the nearest hit of each of
  * RT_LANES rays, for tmin >= 0; hit1: the nearest hit of one ray. Both
- * give rt_bvh_hit's answers bit for bit (see rt_leaf_lanes_hit). */
+ * give rt_bvh_hit's answers bit for bit (see rt_leaf_lanes_hit).
+ * occluded4: for shadow rays, whether each of RT_LANES rays meets
+ * anything in (tmin, its own tmax), for tmin >= 0, without the hit
+ * records (see rt_leaf_lanes_occluded). */
 typedef struct rt_leaf_tests {
     unsigned (*hit4)(const rt_leaf_lanes *ll, const rt_prim *prims, const rt_ray r[RT_LANES],
                      double tmin, double tmax, rt_hit h[RT_LANES]);
     bool (*hit1)(const rt_leaf_lanes *ll, const rt_prim *prims, const rt_ray *r, double tmin,
                  double tmax, rt_hit *h);
+    unsigned (*occluded4)(const rt_leaf_lanes *ll, const rt_prim *prims, const rt_ray r[RT_LANES],
+                          double tmin, const double tmax[RT_LANES]);
 } rt_leaf_tests;
 
 /* rt_bvh_hit for RT_LANES rays at once: h[k] is filled in for every ray
@@ -131,6 +136,18 @@ typedef struct rt_leaf_tests {
 unsigned rt_leaf_lanes_hit(const rt_leaf_tests *t, const rt_leaf_lanes *ll, const rt_bvh *bvh,
                            const rt_prim *prims, const rt_ray r[RT_LANES], double tmin,
                            double tmax, rt_hit h[RT_LANES]);
+
+/* Which of the RT_LANES shadow rays r[k] meet a primitive in (tmin,
+ * tmax[k]): bit k of the result. The reference is rt_leaf_lanes_hit's
+ * nearest hit out to the largest tmax[k], ray k blocked when that hit is
+ * nearer than its own tmax[k]; a blocking hit exists exactly when the
+ * nearest one is one. With a test t->occluded4, a leaf layout ll (may be
+ * NULL) and tmin >= 0, the four rays meet every primitive in vector
+ * lanes, each lane against its own tmax, and the answer is the same; no
+ * hit record is made. Callers with fewer rays repeat one of them. */
+unsigned rt_leaf_lanes_occluded(const rt_leaf_tests *t, const rt_leaf_lanes *ll, const rt_bvh *bvh,
+                                const rt_prim *prims, const rt_ray r[RT_LANES], double tmin,
+                                const double tmax[RT_LANES]);
 
 /* rt_bvh_hit for one ray r: the same answer, the distance and hit record
  * bit for bit, and on an exact tie the same primitive (the first in

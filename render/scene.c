@@ -340,6 +340,12 @@ unsigned rt_scene_hit4(const rt_scene *s, const rt_ray r[RT_LANES], double tmax,
     return rt_leaf_lanes_hit(&s->leaf, s->lanes, &s->bvh, s->prims, r, s->t_min, tmax, h);
 }
 
+unsigned rt_scene_occluded4(const rt_scene *s, const rt_ray r[RT_LANES],
+                            const double tmax[RT_LANES])
+{
+    return rt_leaf_lanes_occluded(&s->leaf, s->lanes, &s->bvh, s->prims, r, s->t_min, tmax);
+}
+
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h)
 {
     int i;

@@ -108,6 +108,13 @@ bool rt_scene_hit(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
 unsigned rt_scene_hit4(const rt_scene *s, const rt_ray r[RT_LANES], double tmax,
                        rt_hit h[RT_LANES]);
 
+/* Whether each of RT_LANES shadow rays r[k] meets anything with t in
+ * (t_min, tmax[k]): bit k of the result, through rt_leaf_lanes_occluded
+ * and the scene's shadow-ray test if it has one; the same answers as
+ * rt_scene_hit4 out to the largest tmax[k], compared lane by lane. */
+unsigned rt_scene_occluded4(const rt_scene *s, const rt_ray r[RT_LANES],
+                            const double tmax[RT_LANES]);
+
 /* The same by testing every flattened primitive (reference). */
 bool rt_scene_hit_brute(const rt_scene *s, rt_ray r, double tmax, rt_hit *h);
 

@@ -16,6 +16,7 @@
 #include "render/scene.h"
 #include "render/scenes.h"
 #include "samplers/sphere.h"
+#include "tests/support/negctl.h"
 
 /* Builds s and gives it the engine's leaf tests, as render/scenes.c does
  * for its scenes: the renderer's entry points then run what it runs. */
@@ -326,6 +327,103 @@ static void test_bvh_hit4_quad_kinds(void **state)
     rt_scene_destroy(s);
 }
 
+/* rt_leaf_lanes_occluded with the tests of instruction set isa (for
+ * RT_ISA_COUNT rt_scene_occluded4, the renderer's entry) against the
+ * nearest hit of rt_bvh_hit, ray by ray: ray k blocked when that hit is
+ * nearer than its own tmax[k]. The four lanes' tmax differ: infinite, a
+ * uniform distance up to 900, the ray's nearest hit exactly (not blocked
+ * by it: t < tmax fails) or the next double above it (blocked), so that
+ * every lane meets the edge where its answer turns. *far_wrong counts the
+ * batches where comparing every lane with the largest tmax instead (the
+ * slip of a shadow test that forgets the lanes' own ends) would answer
+ * otherwise. Returns the blocked rays. */
+static int check_occluded4_isa(const rt_scene *s, int n_batches, vec3 lo, vec3 hi, uint64_t seed,
+                               int isa, long *far_wrong)
+{
+    const char *name = isa == RT_ISA_COUNT ? "rt_scene_occluded4" : rt_isa_name((rt_isa)isa);
+    rt_leaf_tests tests = rt_fast_leaf_tests(isa == RT_ISA_COUNT ? RT_ISA_PORTABLE : (rt_isa)isa);
+    mc_rng rng = mc_rng_derive(seed, 0u);
+    const rt_prim *prims = rt_scene_prims(s);
+    const rt_bvh *b = rt_scene_bvh(s);
+    double tmin = rt_scene_t_min(s);
+    int blocked_rays = 0;
+    for (int i = 0; i < n_batches; i++) {
+        rt_ray r[RT_LANES];
+        double tmax[RT_LANES], far = 0.0;
+        rt_hit h[RT_LANES];
+        bool hit[RT_LANES];
+        for (int k = 0; k < RT_LANES; k++) {
+            r[k] = i % 8 == 7 ? axis_ray(&rng, lo, hi) : random_ray(&rng, lo, hi);
+            hit[k] = rt_bvh_hit(b, prims, &r[k], tmin, HUGE_VAL, &h[k]);
+            unsigned kind = mc_rng_bounded(&rng, 4u);
+            tmax[k] = kind == 0 ? HUGE_VAL : 900.0 * mc_rng_uniform(&rng);
+            if (hit[k] && kind >= 2)
+                tmax[k] = kind == 2 ? h[k].t : nextafter(h[k].t, HUGE_VAL);
+            far = tmax[k] > far ? tmax[k] : far;
+        }
+        unsigned mask = isa == RT_ISA_COUNT
+                            ? rt_scene_occluded4(s, r, tmax)
+                            : rt_leaf_lanes_occluded(&tests, rt_scene_leaf_lanes(s), b, prims, r,
+                                                     tmin, tmax);
+        unsigned want = 0u, at_far = 0u;
+        for (int k = 0; k < RT_LANES; k++) {
+            want |= (unsigned)(hit[k] && h[k].t < tmax[k]) << k;
+            at_far |= (unsigned)(hit[k] && h[k].t < far) << k;
+        }
+        if (mask != want)
+            fail_msg("batch %d (%s): blocked lanes %#x, the nearest hits say %#x", i, name, mask,
+                     want);
+        *far_wrong += at_far != want;
+        blocked_rays += __builtin_popcount(want);
+    }
+    return blocked_rays;
+}
+
+/* The shadow-ray test against the nearest hit: the book scene (10^5
+ * batches of rays from all around and inside it, 5 x 10^4 from its
+ * walls), the all-diffuse box (5 x 10^4 from its walls) and the leaf of
+ * every quad layout (2 x 10^4), through the renderer's entry and every
+ * instruction set the processor has. Control: a shadow test that compares
+ * every lane with the largest tmax must disagree in some batch. */
+static void test_occluded4_matches_hit(void **state)
+{
+    negctl *nc = *state;
+    rt_camera_params cp;
+    long far_wrong = 0;
+    int blocked = 0;
+    struct {
+        rt_scene *s;
+        int n;
+        vec3 lo, hi;
+        uint64_t seed;
+    } runs[4] = {
+        {rt_scene_named("book", &cp), 100000, v3(-100, -100, -900), v3(655, 655, 655), 31u},
+        {NULL, 50000, v3(0, 0, 0), v3(555, 555, 555), 32u},
+        {rt_scene_named("lambert", &cp), 50000, v3(0, 0, 0), v3(555, 555, 555), 33u},
+        {quad_kinds_scene(), 20000, v3(-20, -20, -20), v3(120, 120, 120), 34u},
+    };
+    runs[1].s = runs[0].s;
+    for (int j = 0; j < 4; j++) {
+        assert_non_null(rt_scene_leaf_lanes(runs[j].s));
+        blocked += check_occluded4_isa(runs[j].s, runs[j].n, runs[j].lo, runs[j].hi, runs[j].seed,
+                                       RT_ISA_COUNT, &far_wrong);
+        for (int isa = 0; isa < RT_ISA_COUNT; isa++)
+            if (rt_isa_available((rt_isa)isa))
+                check_occluded4_isa(runs[j].s, runs[j].n / 5, runs[j].lo, runs[j].hi,
+                                    runs[j].seed + 100u, isa, &far_wrong);
+    }
+    printf("rt_scene_occluded4 = the nearest hit against each lane's tmax on 2.2 x 10^5 batches "
+           "(%d rays blocked); against the largest tmax %ld batches would differ\n",
+           blocked, far_wrong);
+    assert_true(blocked > 100000);
+    if (!negctl_record(nc, "every lane against the largest tmax", "occluded4 = nearest hit",
+                       far_wrong > 0))
+        fail_msg("comparing with the largest tmax changed no answer");
+    rt_scene_destroy(runs[0].s);
+    rt_scene_destroy(runs[2].s);
+    rt_scene_destroy(runs[3].s);
+}
+
 /* A soup of 400 random quads and spheres of very different sizes, then the
  * book scene: 2 x 10^5 + 10^6 rays. */
 static void test_bvh_matches_brute_force(void **state)
@@ -558,9 +656,11 @@ int main(void)
         cmocka_unit_test(test_bvh_hit4_matches_hit),
         cmocka_unit_test(test_bvh_hit4_quad_kinds),
         cmocka_unit_test(test_bvh_hit1_matches_hit),
+        cmocka_unit_test(test_occluded4_matches_hit),
         cmocka_unit_test(test_bvh_degenerate_inputs),
         cmocka_unit_test(test_camera_geometry),
         cmocka_unit_test(test_scene_errors),
     };
-    return cmocka_run_group_tests_name("test_render_geometry", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("test_render_geometry", tests, negctl_group_setup,
+                                       negctl_group_teardown);
 }

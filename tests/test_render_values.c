@@ -968,11 +968,65 @@ static void test_estimated_apart_only_s0(void **state)
     rt_scene_destroy(s);
 }
 
+/* The segment shared by a join's readers (rt_bdpt_segment) against each
+ * reader computing its own, bit for bit, over 10^5 point pairs from PCG32
+ * stream (seed 77, stream 1): coordinates uniform in [-600, 600] times a
+ * power of two from 2^-8 to 2^8, normals uniform on the sphere. Made from
+ * either end, the lengths are the same bits, the directions negatives of
+ * each other and vec3_normalize's, and a normal's |cos| against d the
+ * same: what lets one segment serve the densities at both ends. Control:
+ * the direction as d divided by the length component by component, not
+ * times its reciprocal, must differ from vec3_normalize in some pair. */
+static bool same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+static void test_segment_both_ends_same_bits(void **state)
+{
+    negctl *nc = *state;
+    mc_rng rng;
+    mc_rng_seed(&rng, 77u, 1u);
+    long bad = 0, control_differs = 0;
+    for (int k = 0; k < 100000; k++) {
+        vec3 p[2], n;
+        for (int e = 0; e < 2; e++) {
+            double scale = ldexp(1.0, (int)(mc_rng_uniform(&rng) * 17.0) - 8);
+            p[e] = vec3_make((2.0 * mc_rng_uniform(&rng) - 1.0) * 600.0 * scale,
+                             (2.0 * mc_rng_uniform(&rng) - 1.0) * 600.0 * scale,
+                             (2.0 * mc_rng_uniform(&rng) - 1.0) * 600.0 * scale);
+        }
+        double z = 2.0 * mc_rng_uniform(&rng) - 1.0, phi = 2.0 * MC_PI * mc_rng_uniform(&rng);
+        double r = sqrt(1.0 - z * z);
+        n = vec3_make(r * cos(phi), r * sin(phi), z);
+        rt_bdpt_segment ab = rt_bdpt_segment_make(p[0], p[1]), ba = rt_bdpt_segment_make(p[1], p[0]);
+        vec3 alone = vec3_normalize(vec3_sub(p[1], p[0]));
+        vec3 back = vec3_normalize(vec3_sub(p[0], p[1]));
+        double dist = vec3_length(vec3_sub(p[1], p[0]));
+        bool ok = same_bits(ab.dist, ba.dist) && same_bits(ab.dist, dist) &&
+                  same_bits(ab.dist_sq, ba.dist_sq) && same_bits(ab.dir.x, alone.x) &&
+                  same_bits(ab.dir.y, alone.y) && same_bits(ab.dir.z, alone.z) &&
+                  same_bits(-ab.dir.x, back.x) && same_bits(-ab.dir.y, back.y) &&
+                  same_bits(-ab.dir.z, back.z) &&
+                  same_bits(fabs(vec3_dot(n, ab.d)), fabs(vec3_dot(n, vec3_sub(p[0], p[1])))) &&
+                  same_bits(vec3_dot(n, vec3_neg(ab.dir)), vec3_dot(n, back));
+        bad += !ok;
+        vec3 divided = vec3_make(ab.d.x / ab.dist, ab.d.y / ab.dist, ab.d.z / ab.dist);
+        control_differs += !(same_bits(divided.x, alone.x) && same_bits(divided.y, alone.y) &&
+                             same_bits(divided.z, alone.z));
+    }
+    printf("segment from either end: %ld of 100000 pairs differ from each end alone; "
+           "dividing by the length differs in %ld\n",
+           bad, control_differs);
+    assert_int_equal(bad, 0);
+    if (!negctl_record(nc, "the direction divided by the length", "segment bits",
+                       control_differs > 0))
+        fail_msg("dividing by the length gave vec3_normalize's bits in every pair");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_mis_weights_by_hand),
         cmocka_unit_test(test_running_weights_every_join),
+        cmocka_unit_test(test_segment_both_ends_same_bits),
         cmocka_unit_test(test_estimated_apart_only_s0),
         cmocka_unit_test(test_camera_importance_and_density),
         cmocka_unit_test(test_furnace_at_largest_depth),

@@ -266,6 +266,48 @@ __attribute__((target("avx2"))) static unsigned hit4_avx2(const rt_leaf_lanes *b
 }
 /* END SNIPPET hit4_avx2 */
 
+/* A shadow ray's lane: its own tmax, and whether a hit nearer than that
+ * has been met. */
+typedef struct blocked {
+    __m256d tmax, any;
+} blocked;
+
+/* keep's counterpart for shadow rays: a lane is blocked by any hit that
+ * `in` admits (t > tmin, the point inside) nearer than its own tmax. keep
+ * admits the same hits and ends with their minimum, so "some admitted
+ * hit is nearer than tmax" is "the nearest is", the reference's
+ * question. The primitive is not needed. */
+AVX2 void block(blocked *nb, __m256d t, __m256d in, __m256d prim)
+{
+    (void)prim;
+    nb->any = _mm256_or_pd(nb->any, _mm256_and_pd(in, _mm256_cmp_pd(t, nb->tmax, _CMP_LT_OQ)));
+}
+
+/* The root leaf against four shadow rays: hit4_avx2's tests, each lane
+ * against its own tmax, and no records. */
+/* BEGIN SNIPPET occluded4_avx2 */
+__attribute__((target("avx2"))) static unsigned occluded4_avx2(const rt_leaf_lanes *b4,
+                                                              const rt_prim *prims,
+                                                              const rt_ray r[RT_LANES], double tmin,
+                                                              const double tmax[RT_LANES])
+{
+    lanes L = load_rays(r);
+    const __m256d lo = _mm256_set1_pd(tmin);
+    blocked nb = {_mm256_loadu_pd(tmax), _mm256_setzero_pd()};
+    QUADS(n_axis, axis, quad_axis, inside, block)
+    QUADS(n_turned, turned, quad_turned, inside, block)
+    QUADS(n_flat, flat, quad_flat, inside, block)
+    QUADS(n_other, other, quad_other, inside, block)
+    for (int j = 0; j < b4->n_spheres; j++) {
+        __m256d disc, t = sphere(&L, &prims[b4->spheres[j]].as.sphere, lo, &disc);
+        __m256d in = _mm256_and_pd(_mm256_cmp_pd(disc, _mm256_setzero_pd(), _CMP_GE_OQ),
+                                   _mm256_cmp_pd(t, lo, _CMP_GT_OQ));
+        block(&nb, t, in, in);
+    }
+    return (unsigned)_mm256_movemask_pd(nb.any);
+}
+/* END SNIPPET occluded4_avx2 */
+
 /* BEGIN SNIPPET hit1_avx2 */
 /* One ray against the root leaf: the ray in every lane, four quads in
  * each packet (quad_other: the full test, valid for any tmin), each lane
@@ -312,9 +354,9 @@ rt_leaf_tests rt_fast_leaf_tests(rt_isa isa)
 {
 #if RT_ISA_X86
     if (isa == RT_ISA_AVX2)
-        return (rt_leaf_tests){hit4_avx2, hit1_avx2};
+        return (rt_leaf_tests){hit4_avx2, hit1_avx2, occluded4_avx2};
 #else
     (void)isa;
 #endif
-    return (rt_leaf_tests){NULL, NULL};
+    return (rt_leaf_tests){NULL, NULL, NULL};
 }
