@@ -46,7 +46,7 @@ help:
 	@echo "make run       install missing packages, run every chapter program, print one table"
 	@echo "make bench     throughput benchmarks and the error tables (rendering the references first)"
 	@echo "make reference converged book and lambert images, 600x600 and 300x300, cached in build/"
-	@echo "make book-program BOOK_SRC=DIR  the book's own program, which make bench then times beside mcbox"
+	@echo "make book-program BOOK_SRC=DIR  the book's own renderer and pi program, which make bench then times beside mcbox"
 	@echo "make soak      the statistical tests over SEEDS seeds; prints the failure rate"
 	@echo "make plots     every figure under build/plots/"
 	@echo "make book      the tutorial as HTML and EPUB under build/book/"
@@ -98,6 +98,7 @@ _run: all
 _bench: all reference
 	@MC_BUILD=$(B) MC_MPI=$(MPI) MC_REF_BOOK="$(call ref_prefixes,book)" \
 	    MC_REF_LAMBERT="$(call ref_prefixes,lambert)" MC_BOOK_PROGRAM="$(wildcard $(BOOK_PROGRAM))" \
+	    MC_BOOK_PI="$(wildcard $(BOOK_PI))" \
 	    bash tools/run_bench.sh
 
 SEEDS ?= 20

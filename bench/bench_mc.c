@@ -4,9 +4,20 @@
  * Prints one table: uniform doubles per second from one PCG32 stream, the
  * book-style scalar pi loop (one stream, one point at a time), and the
  * blocked SIMD/OpenMP kernel of mc/pi.h on one and two threads, with the
- * speed-up over the scalar loop and over the book's own program (26 M
- * samples/s measured on the reference machine). It also checks that the 1-
- * and 2-thread pi estimates are bit-identical and exits 1 if they are not.
+ * speed-up over the scalar loop and over the book's own program. It also
+ * checks that the 1- and 2-thread pi estimates are bit-identical and exits
+ * 1 if they are not.
+ *
+ * The book's program is not part of mcbox. Its rate is a constant measured
+ * once on another machine (26 M points/s), unless --book-pi PATH (or
+ * MC_BOOK_PI, which `make bench` sets when `make book-program` has built
+ * it) names the book's pi.cc of release v1.123.0 built by
+ * tools/book_program.sh with 10000^2 iterations. Then that program is run
+ * here three times before anything else, and its points per second (two
+ * per iteration: one for the plain estimate, one for the stratified one)
+ * over the median time replace the constant: two programs timed on one
+ * machine. --quick (or MC_BENCH_QUICK=1) runs every loop 64 times
+ * shorter.
  *
  * A second table ("Quasi-Monte Carlo" chapter) gives the point sources of
  * mc/qmc.h in millions of coordinates per second (points per second per
@@ -20,8 +31,11 @@
  *
  * Build and run: make bench   (or: make all && build/bench/bench_mc)
  */
+#include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "examples/common/cli.h"
 #include "examples/common/timing.h"
@@ -29,9 +43,13 @@
 #include "mc/qmc.h"
 #include "mc/rng.h"
 
-/* Samples/s of the book's program (drand48, one point per iteration),
- * measured once on the machine the project targets. */
+/* Points/s of the book's pi program, measured once on the machine the
+ * project targeted then; the default of the "vs book" column. */
 #define BOOK_RATE 26e6
+
+/* The points the book's pi.cc makes as tools/book_program.sh builds it:
+ * sqrt_N = 10000, a plain and a stratified point per iteration. */
+#define BOOK_PI_POINTS (2.0 * 10000.0 * 10000.0)
 
 /* Keeps the optimizer from dropping work whose result is otherwise unused. */
 static volatile double sink;
@@ -168,9 +186,9 @@ static void qmc_row(const char *what, double ns, double pcg_ns)
     printf("%-36s %12.1f %10.2f %12.2f\n", what, 1e3 / ns, ns, ns / pcg_ns);
 }
 
-static void qmc_table(void)
+static void qmc_table(uint64_t n)
 {
-    const uint64_t n = UINT64_C(1) << 24, seed = 2385u;
+    const uint64_t seed = 2385u;
     static const int sobol = 0, xor = 1, owen = 2, halton = 3;
     static const mc_qmc_method c_rand = MC_QMC_RANDOM, c_owen = MC_QMC_SOBOL_OWEN,
                                c_halton = MC_QMC_HALTON, c_sobol = MC_QMC_SOBOL,
@@ -196,32 +214,58 @@ static void qmc_table(void)
     qmc_row("padded Owen Sobol pairs, 64 spp", app_bench_ns(q_padded, NULL, n, seed, 5), pcg);
 }
 
-static void row(const char *what, int threads, double rate, double scalar)
+static void row(const char *what, int threads, double rate, double scalar, double book)
 {
     printf("%-30s %7d %12.1f %10.1fx %10.1fx\n", what, threads, rate / 1e6, rate / scalar,
-           rate / BOOK_RATE);
+           rate / book);
 }
 
 int main(int argc, char **argv)
 {
-    app_parse("bench_mc",
-              "bench_mc\n  throughput of the RNG, the pi kernels (1 and 2 threads) and the QMC\n"
-              "  point sources (see make bench)",
-              argc, argv, NULL, 0, NULL, 0);
-    uint64_t n = UINT64_C(1) << 30;
-    double uni = rate_uniform(UINT64_C(1) << 28);
-    double scalar = rate_scalar_pi(UINT64_C(1) << 27);
+    const char *prog = "bench_mc";
+    bool quick = getenv("MC_BENCH_QUICK") && strcmp(getenv("MC_BENCH_QUICK"), "0") != 0;
+    const char *book_pi = getenv("MC_BOOK_PI");
+    const app_opt opts[] = {
+        {"--quick", APP_FLAG, &quick, "every loop 64 times shorter (also MC_BENCH_QUICK=1)", NULL, 0,
+         0},
+        {"--book-pi", APP_STRING, &book_pi,
+         "the book's pi.cc built with 10000^2 iterations (make book-program): time it here, the "
+         "median of 3 runs, instead of the constant 26 M points/s (default $MC_BOOK_PI)",
+         NULL, 0, 0},
+    };
+    app_parse(prog,
+              "bench_mc [--quick] [--book-pi PATH]\n  throughput of the RNG, the pi kernels (1 and "
+              "2 threads) and the QMC\n  point sources (see make bench)",
+              argc, argv, opts, sizeof opts / sizeof opts[0], NULL, 0);
+    double book = BOOK_RATE;
+    if (book_pi && *book_pi) {
+        double t = app_time_program(prog, "the book's pi program", book_pi, 3);
+        if (isnan(t))
+            return 2; /* a bad --book-pi: bad input */
+        book = BOOK_PI_POINTS / t;
+        printf("vs book: the book's pi.cc, timed here: %.3f s for %.0f points, %.1f M points/s "
+               "(median of 3)\n",
+               t, BOOK_PI_POINTS, book / 1e6);
+    } else {
+        printf("vs book: %.1f M points/s, a constant from another machine (--book-pi times the "
+               "book's program here)\n",
+               book / 1e6);
+    }
+    unsigned shift = quick ? 6u : 0u;
+    uint64_t n = (UINT64_C(1) << 30) >> shift;
+    double uni = rate_uniform((UINT64_C(1) << 28) >> shift);
+    double scalar = rate_scalar_pi((UINT64_C(1) << 27) >> shift);
     mc_estimate e1, e2, s1, s2;
     double p1 = rate_pi(mc_pi_plain, n, 1, &e1), p2 = rate_pi(mc_pi_plain, n, 2, &e2);
     double q1 = rate_pi(mc_pi_stratified, n / 4, 1, &s1), q2 = rate_pi(mc_pi_stratified, n / 4, 2, &s2);
 
     printf("%-30s %7s %12s %11s %11s\n", "benchmark", "threads", "M/s", "vs scalar", "vs book");
     printf("%-30s %7d %12.1f %11s %11s\n", "rng uniform doubles", 1, uni / 1e6, "-", "-");
-    row("pi scalar loop (book style)", 1, scalar, scalar);
-    row("pi plain, SIMD lanes", 1, p1, scalar);
-    row("pi plain, SIMD lanes", 2, p2, scalar);
-    row("pi stratified, SIMD lanes", 1, q1, scalar);
-    row("pi stratified, SIMD lanes", 2, q2, scalar);
+    row("pi scalar loop (book style)", 1, scalar, scalar, book);
+    row("pi plain, SIMD lanes", 1, p1, scalar, book);
+    row("pi plain, SIMD lanes", 2, p2, scalar, book);
+    row("pi stratified, SIMD lanes", 1, q1, scalar, book);
+    row("pi stratified, SIMD lanes", 2, q2, scalar, book);
 
     /* Identical means the estimate and its error bar, bit for bit. */
     bool same_plain = e1.value == e2.value && e1.std_error == e2.std_error;
@@ -230,6 +274,6 @@ int main(int argc, char **argv)
            e1.value, e1.std_error, same_plain ? "identical" : "DIFFER");
     printf("pi stratified n=%llu: %.10f +- %.2e (1 and 2 threads %s)\n",
            (unsigned long long)(n / 4), s1.value, s1.std_error, same_strat ? "identical" : "DIFFER");
-    qmc_table();
+    qmc_table((UINT64_C(1) << 24) >> shift);
     return same_plain && same_strat ? 0 : 1;
 }

@@ -46,15 +46,10 @@
  * A quicker run: MC_BENCH_QUICK=1 (or --quick) renders 10 samples per
  * pixel instead of 100; --spp N and --max-threads T override.
  */
-#define _POSIX_C_SOURCE 200809L /* fork, execl, waitpid */
-#include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "examples/common/cli.h"
 #include "examples/common/timing.h"
@@ -227,36 +222,6 @@ static bool error_rows_measure(const rt_scene *scene, rt_camera_params cp, uint6
     return true;
 }
 
-/* Wall seconds of one run of the program at path, its standard output
- * thrown away; NAN (after a line on stderr) when it cannot be started or
- * does not exit with status 0. */
-static double time_program(const char *path)
-{
-    double t0 = app_wall_seconds();
-    pid_t pid = fork();
-    if (pid == 0) {
-        int devnull = open("/dev/null", O_WRONLY);
-        if (devnull < 0 || dup2(devnull, STDOUT_FILENO) < 0)
-            _exit(126);
-        execl(path, path, (char *)NULL);
-        _exit(127);
-    }
-    int status = 0;
-    while (pid > 0 && waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR)
-            pid = -1;
-    double seconds = app_wall_seconds() - t0;
-    if (pid < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        fprintf(stderr, "%s: the book's program %s: %s\n", prog, path,
-                pid < 0                       ? "cannot be run"
-                : !WIFEXITED(status)          ? "killed by a signal"
-                : WEXITSTATUS(status) == 127 ? "cannot be started"
-                                              : "failed");
-        return (double)NAN;
-    }
-    return seconds;
-}
-
 /* The book's program's time: the median of NROUNDS runs of path, or the
  * constant BOOK_ERR_SECONDS when path is NULL or empty. False when a run
  * fails. */
@@ -265,11 +230,10 @@ static bool book_time_get(const char *path, book_time *bt)
     *bt = (book_time){BOOK_ERR_SECONDS, false};
     if (!path || !*path)
         return true;
-    double t[NROUNDS];
-    for (int i = 0; i < NROUNDS; i++)
-        if (isnan(t[i] = time_program(path)))
-            return false;
-    *bt = (book_time){app_median(t, NROUNDS), true};
+    double t = app_time_program(prog, "the book's program", path, NROUNDS);
+    if (isnan(t))
+        return false;
+    *bt = (book_time){t, true};
     return true;
 }
 

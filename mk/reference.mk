@@ -38,12 +38,15 @@ $(REF)/%-$(call ref_tag,$(1))-b.pfm: | $(B)/bin/cornell_box
 endef
 $(foreach w,$(REF_WIDTH),$(eval $(call ref_rules,$(w))))
 
-# make book-program BOOK_SRC=DIR: the book's own program, from a checkout
+# make book-program BOOK_SRC=DIR: the book's own programs, from a checkout
 # of its code at v1.123.0 that the user makes (tools/book_program.sh says
-# how), built for the book's 600 x 600 render at 100 spp. When it is there,
-# make bench times it on this machine and measures every x_book figure
-# against that time instead of the constant 68.3 s of another machine.
+# how): the renderer for the book's 600 x 600 render at 100 spp, and pi.cc
+# at 10000^2 iterations. When they are there, make bench times them on this
+# machine and measures every x_book figure, and bench_mc's "vs book"
+# column, against those times instead of the constants (68.3 s, 26 M
+# points/s) of another machine.
 BOOK_PROGRAM := $(B)/book-program/book
+BOOK_PI := $(B)/book-program/pi
 .PHONY: book-program
 book-program:
 	@test -n "$(BOOK_SRC)" || { echo "make book-program: BOOK_SRC=DIR is needed, a checkout of the book's code: git clone --branch v1.123.0 https://github.com/petershirley/raytracingtherestofyourlife" >&2; exit 2; }

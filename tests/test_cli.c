@@ -20,6 +20,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <poll.h>
 #include <signal.h>
 #include <spawn.h>
@@ -767,6 +768,44 @@ static void test_cli_negative_controls(void **state)
     assert_true(all);
 }
 
+/* The scheme both benchmarks share for the book's programs (bench_render's
+ * renderer, bench_mc's pi): bench, run with `timed` (which names a fake
+ * book program that logs each run to `log`), exits 0 after running it
+ * three times; its output is left in r. */
+static void run_timed(const char *bench, const char *const *timed, const char *log, run *r)
+{
+    run_prog(bench, timed, r);
+    assert_int_equal(r->status, 0);
+    FILE *f = fopen(log, "r");
+    assert_non_null(f);
+    int runs = 0;
+    for (int c; (c = fgetc(f)) != EOF;)
+        runs += c == '\n';
+    fclose(f);
+    assert_int_equal(runs, 3);
+}
+
+/* The rest of the scheme: run with `constant` (no book program) the
+ * output holds constant_line; a book program at prog that fails, and one
+ * that is not there, are bad input, one line naming the benchmark. */
+static void check_constant_and_bad(const char *bench, const char *name, const char *const *timed,
+                                   const char *const *constant, const char *constant_line,
+                                   const char *prog, run *r)
+{
+    char why[512];
+    run_prog(bench, constant, r);
+    assert_int_equal(r->status, 0);
+    assert_non_null(strstr(r->out, constant_line));
+    write_script(prog, "exit 3");
+    run_prog(bench, timed, r);
+    assert_null(judge_bad(name, r, why, sizeof why));
+    assert_non_null(strstr(r->err, "failed"));
+    unlink(prog);
+    run_prog(bench, timed, r);
+    assert_null(judge_bad(name, r, why, sizeof why));
+    assert_non_null(strstr(r->err, "cannot be started"));
+}
+
 /* bench_render --book-program: the program named is run three times and
  * the median of its times replaces the constant of another machine in the
  * x_book figures; a program that cannot be started, or fails, is bad
@@ -777,7 +816,7 @@ static void test_cli_negative_controls(void **state)
 static void test_cli_bench_book_program(void **state)
 {
     (void)state;
-    char bench[1024], dir[] = "/tmp/mcbox-book-XXXXXX", prog[128], log[128], body[512], why[512];
+    char bench[1024], dir[] = "/tmp/mcbox-book-XXXXXX", prog[128], log[128], body[512];
     snprintf(bench, sizeof bench, "%s/bench/bench_render", mc_test_build_dir());
     assert_int_equal(access(bench, X_OK), 0);
     assert_non_null(mkdtemp(dir));
@@ -793,37 +832,58 @@ static void test_cli_bench_book_program(void **state)
     assert_non_null(r);
     const char *timed[] = {"--book-program", prog, "--width", "8", "--spp", "1", "--max-threads", "1",
                            NULL};
-    run_prog(bench, timed, r);
-    assert_int_equal(r->status, 0);
-    FILE *f = fopen(log, "r");
-    assert_non_null(f);
-    int runs = 0;
-    for (int c; (c = fgetc(f)) != EOF;)
-        runs += c == '\n';
-    fclose(f);
-    assert_int_equal(runs, 3);
+    run_timed(bench, timed, log, r);
     const char *key = "the book's program: ", *at = strstr(r->out, key);
     assert_non_null(at);
     char *end;
     double seconds = strtod(at + strlen(key), &end);
-    printf("bench_render timed the fake book program: %.3f s, after %d runs\n", seconds, runs);
+    printf("bench_render timed the fake book program: %.3f s, after 3 runs\n", seconds);
     assert_true(seconds >= 0.3);
     assert_int_equal(strncmp(end, " s (timed here", 14), 0);
-
     const char *constant[] = {"--width", "8", "--spp", "1", "--max-threads", "1", NULL};
-    run_prog(bench, constant, r);
-    assert_int_equal(r->status, 0);
-    assert_non_null(strstr(r->out, "the book's program: 68.3 s (a constant from another machine)"));
+    check_constant_and_bad(bench, "bench_render", timed, constant,
+                           "the book's program: 68.3 s (a constant from another machine)", prog, r);
+    free(r);
+    unlink(log);
+    rmdir(dir);
+}
 
-    /* Bad input: a program that fails, and one that is not there. */
-    write_script(prog, "exit 3");
-    run_prog(bench, timed, r);
-    assert_null(judge_bad("bench_render", r, why, sizeof why));
-    assert_non_null(strstr(r->err, "failed"));
-    unlink(prog);
-    run_prog(bench, timed, r);
-    assert_null(judge_bad("bench_render", r, why, sizeof why));
-    assert_non_null(strstr(r->err, "cannot be started"));
+/* bench_mc --book-pi: the same scheme for the book's pi program. A fake
+ * one that logs each run and sleeps 0.2 s; --quick keeps the loops short.
+ * The header gives the median time (at least the sleep) and the points
+ * per second it means, 2e8 over that time; without the option it names
+ * the constant. */
+static void test_cli_bench_book_pi(void **state)
+{
+    (void)state;
+    char bench[1024], dir[] = "/tmp/mcbox-bookpi-XXXXXX", prog[128], log[128], body[512];
+    snprintf(bench, sizeof bench, "%s/bench/bench_mc", mc_test_build_dir());
+    assert_int_equal(access(bench, X_OK), 0);
+    assert_non_null(mkdtemp(dir));
+    snprintf(prog, sizeof prog, "%s/pi", dir);
+    snprintf(log, sizeof log, "%s/runs", dir);
+    snprintf(body, sizeof body, "echo run >> '%s'; sleep 0.2; echo 'Regular    Estimate of Pi = 3.14'",
+             log);
+    write_script(prog, body);
+    unsetenv("MC_BOOK_PI");
+    run *r = malloc(sizeof *r);
+    assert_non_null(r);
+    const char *timed[] = {"--book-pi", prog, "--quick", NULL};
+    run_timed(bench, timed, log, r);
+    const char *key = "vs book: the book's pi.cc, timed here: ", *at = strstr(r->out, key);
+    assert_non_null(at);
+    char *end;
+    double seconds = strtod(at + strlen(key), &end);
+    assert_int_equal(strncmp(end, " s for 200000000 points, ", 25), 0);
+    double rate = strtod(end + 25, &end);
+    printf("bench_mc timed the fake pi program: %.3f s, %.1f M points/s, after 3 runs\n", seconds,
+           rate);
+    assert_true(seconds >= 0.2);
+    /* 2e8 points over the median time, as printed (to its rounding). */
+    assert_true(fabs(rate - 200.0 / seconds) <= 0.05 + 200.0 / seconds * 0.01);
+    const char *constant[] = {"--quick", NULL};
+    check_constant_and_bad(bench, "bench_mc", timed, constant,
+                           "vs book: 26.0 M points/s, a constant from another machine", prog, r);
     free(r);
     unlink(log);
     rmdir(dir);
@@ -843,7 +903,7 @@ static int by_name(const void *a, const void *b)
 int main(void)
 {
     static char *paths[MAX_PROGRAMS];
-    static struct CMUnitTest tests[MAX_PROGRAMS + 6];
+    static struct CMUnitTest tests[MAX_PROGRAMS + 7];
     static char names[MAX_PROGRAMS][96];
     size_t n = 0;
     /* Every program and every benchmark follows the same CLI rules. */
@@ -879,11 +939,12 @@ int main(void)
     tests[4] = (struct CMUnitTest){"test_cli_bad_input_matrix", test_cli_bad_input_matrix, NULL, NULL, NULL};
     tests[5] = (struct CMUnitTest){"test_cli_bench_book_program", test_cli_bench_book_program, NULL, NULL,
                                    NULL};
+    tests[6] = (struct CMUnitTest){"test_cli_bench_book_pi", test_cli_bench_book_pi, NULL, NULL, NULL};
     for (size_t i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[i], "test_cli_%s", strrchr(paths[i], '/') + 1);
-        tests[i + 6] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
+        tests[i + 7] = (struct CMUnitTest){names[i], test_cli_program, NULL, NULL, paths[i]};
     }
-    int rc = _cmocka_run_group_tests("test_cli", tests, n + 6, NULL, report);
+    int rc = _cmocka_run_group_tests("test_cli", tests, n + 7, NULL, report);
     for (size_t i = 0; i < n; i++)
         free(paths[i]);
     return rc;

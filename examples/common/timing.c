@@ -4,8 +4,14 @@
 
 #include "examples/common/timing.h"
 
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <sys/wait.h>
 #include <time.h>
+#include <unistd.h>
 
 static double seconds_of(clockid_t clock)
 {
@@ -49,4 +55,45 @@ double app_bench_ns(double (*loop)(void *ctx, uint64_t n, mc_rng *rng), void *ct
         t[k] = (app_thread_seconds() - t0) * 1e9 / (double)n;
     }
     return app_median(t, (size_t)reps);
+}
+
+/* Wall seconds of one run of path, its standard output thrown away; NAN
+ * (after a line on stderr) when it cannot be started or does not exit
+ * with status 0. */
+static double time_one_run(const char *prog, const char *what, const char *path)
+{
+    double t0 = app_wall_seconds();
+    pid_t pid = fork();
+    if (pid == 0) {
+        int devnull = open("/dev/null", O_WRONLY);
+        if (devnull < 0 || dup2(devnull, STDOUT_FILENO) < 0)
+            _exit(126);
+        execl(path, path, (char *)NULL);
+        _exit(127);
+    }
+    int status = 0;
+    while (pid > 0 && waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR)
+            pid = -1;
+    double seconds = app_wall_seconds() - t0;
+    if (pid < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        fprintf(stderr, "%s: %s %s: %s\n", prog, what, path,
+                pid < 0                       ? "cannot be run"
+                : !WIFEXITED(status)          ? "killed by a signal"
+                : WEXITSTATUS(status) == 127 ? "cannot be started"
+                                              : "failed");
+        return (double)NAN;
+    }
+    return seconds;
+}
+
+double app_time_program(const char *prog, const char *what, const char *path, int runs)
+{
+    double t[APP_BENCH_MAX_REPS];
+    if (runs < 1 || runs > APP_BENCH_MAX_REPS)
+        return (double)NAN;
+    for (int i = 0; i < runs; i++)
+        if (isnan(t[i] = time_one_run(prog, what, path)))
+            return (double)NAN;
+    return app_median(t, (size_t)runs);
 }

@@ -39,4 +39,12 @@ double app_median(double *x, size_t n);
 double app_bench_ns(double (*loop)(void *ctx, uint64_t n, mc_rng *rng), void *ctx, uint64_t n,
                     uint64_t seed, int reps);
 
+/* The median wall time in seconds of `runs` (1 .. APP_BENCH_MAX_REPS)
+ * runs of the program at path, without arguments, its standard output
+ * thrown away: the way make bench times another project's program (the
+ * book's) beside mcbox's. When a run cannot be started or does not exit
+ * with status 0, prints one line on stderr, "PROG: WHAT PATH: why", and
+ * returns NAN. */
+double app_time_program(const char *prog, const char *what, const char *path, int runs);
+
 #endif /* APP_TIMING_H */
