@@ -302,7 +302,7 @@ __attribute__((target("avx2"))) static unsigned occluded4_avx2(const rt_leaf_lan
         __m256d disc, t = sphere(&L, &prims[b4->spheres[j]].as.sphere, lo, &disc);
         __m256d in = _mm256_and_pd(_mm256_cmp_pd(disc, _mm256_setzero_pd(), _CMP_GE_OQ),
                                    _mm256_cmp_pd(t, lo, _CMP_GT_OQ));
-        block(&nb, t, in, in);
+        block(&nb, t, in, _mm256_setzero_pd());
     }
     return (unsigned)_mm256_movemask_pd(nb.any);
 }
