@@ -226,9 +226,12 @@ void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int n
      * camera subpath ending on the lamp) is left out when the light
      * subpath's second vertex is specular, weight_from's rule for x[1]
      * (every join that reads la has s >= 2, where light[1] is x[1]). */
+    bool second_delta = false; /* light[1] exists only for nl >= 2 */
+    if (nl >= 2)
+        second_delta = light[1].delta;
     for (int i = 0; i < nl; i++) {
         double q = sp->lr[i] / sp->lf[i];
-        bool ok = i == 0 ? !(nl >= 2 && light[1].delta) : sp->jl[i - 1] && sp->jl[i];
+        bool ok = i == 0 ? !second_delta : sp->jl[i - 1] && sp->jl[i];
         sp->la[i] = q * q * ((ok ? 1.0 : 0.0) + (i > 0 ? sp->la[i - 1] : 0.0));
     }
     /* On the camera side the strategy with t' camera vertices joins camera
