@@ -35,6 +35,7 @@
 #include <string.h>
 
 #include "examples/common/cli.h"
+#include "examples/common/timing.h"
 #include "render/bdpt.h"
 #include "render/render.h"
 #include "render/scenes.h"
@@ -141,7 +142,7 @@ static bool scene_table(const char *scene_name, int width, const uint64_t *count
 
 int main(int argc, char **argv)
 {
-    bool quick = getenv("MC_BENCH_QUICK") && strcmp(getenv("MC_BENCH_QUICK"), "0") != 0;
+    bool quick = app_bench_quick();
     int width = 0, threads = 2;
     uint64_t max_spp = 0;
     const app_opt opts[] = {

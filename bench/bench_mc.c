@@ -35,7 +35,6 @@
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "examples/common/cli.h"
 #include "examples/common/timing.h"
@@ -223,7 +222,7 @@ static void row(const char *what, int threads, double rate, double scalar, doubl
 int main(int argc, char **argv)
 {
     const char *prog = "bench_mc";
-    bool quick = getenv("MC_BENCH_QUICK") && strcmp(getenv("MC_BENCH_QUICK"), "0") != 0;
+    bool quick = app_bench_quick();
     const char *book_pi = getenv("MC_BOOK_PI");
     const app_opt opts[] = {
         {"--quick", APP_FLAG, &quick, "every loop 64 times shorter (also MC_BENCH_QUICK=1)", NULL, 0,

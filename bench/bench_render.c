@@ -326,7 +326,7 @@ static bool error_tables(const char *scene_name, uint64_t spp, uint64_t seed, in
 int main(int argc, char **argv)
 {
     uint64_t spp = 100, seed = 1;
-    bool quick = getenv("MC_BENCH_QUICK") && strcmp(getenv("MC_BENCH_QUICK"), "0") != 0;
+    bool quick = app_bench_quick();
     int max_threads = 2, width = 600;
     const char *reference = getenv("MC_REF_BOOK"), *lambert = getenv("MC_REF_LAMBERT");
     const char *book_program = getenv("MC_BOOK_PROGRAM");
@@ -364,12 +364,13 @@ int main(int argc, char **argv)
         return 1;
     }
     double book_paths_per_s = 600.0 * 600.0 * 100.0 / bt.seconds;
+    char source[64];
+    snprintf(source, sizeof source, "timed here, median of %d runs", NROUNDS);
     printf("book scene %dx%d, %llu spp, max depth 50, mixture; the book's program: %.1f s (%s), "
            "%.2f Mpaths/s\n"
            "(x_book: paths per second as a multiple of the book's program, not a thread speed-up)\n",
            width, width, (unsigned long long)spp, bt.seconds,
-           bt.measured ? "timed here, median of 3 runs" : "a constant from another machine",
-           book_paths_per_s * 1e-6);
+           bt.measured ? source : "a constant from another machine", book_paths_per_s * 1e-6);
     printf("%7s %10s %12s %15s %10s %9s\n", "threads", "wall_s", "Mpaths/s", "Msegments/s", "x_book", "dropped");
     for (int t = 1; t <= max_threads; t++) {
         rt_render_job job = rt_render_job_default(scene, rt_camera_make(cp, width, width));

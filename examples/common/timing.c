@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -55,6 +56,12 @@ double app_bench_ns(double (*loop)(void *ctx, uint64_t n, mc_rng *rng), void *ct
         t[k] = (app_thread_seconds() - t0) * 1e9 / (double)n;
     }
     return app_median(t, (size_t)reps);
+}
+
+bool app_bench_quick(void)
+{
+    const char *q = getenv("MC_BENCH_QUICK");
+    return q && strcmp(q, "0") != 0;
 }
 
 /* Wall seconds of one run of path, its standard output thrown away; NAN

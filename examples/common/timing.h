@@ -13,6 +13,7 @@
 #ifndef APP_TIMING_H
 #define APP_TIMING_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -38,6 +39,11 @@ double app_median(double *x, size_t n);
  * volatile so that the optimizer cannot drop the work. */
 double app_bench_ns(double (*loop)(void *ctx, uint64_t n, mc_rng *rng), void *ctx, uint64_t n,
                     uint64_t seed, int reps);
+
+/* Whether the environment asks for the benchmarks' quick runs:
+ * MC_BENCH_QUICK set to anything but "0" (each benchmark's --quick says
+ * what it shortens). */
+bool app_bench_quick(void);
 
 /* The median wall time in seconds of `runs` (1 .. APP_BENCH_MAX_REPS)
  * runs of the program at path, without arguments, its standard output
