@@ -12,7 +12,10 @@
 rt_bdpt_ctx rt_bdpt_ctx_make(const rt_scene *scene, const rt_path_settings *ps,
                              const rt_camera *camera)
 {
-    rt_bdpt_ctx c = {scene, ps, camera, vec3_make(0.0, 0.0, 1.0), 0.0, false, NULL};
+    rt_bdpt_ctx c = {scene, ps, camera, vec3_make(0.0, 0.0, 1.0), 0.0, 0.0, false, NULL};
+    /* Light tracing alone cannot see the glass that the aim sends its
+     * paths through, and measured no gain from it: bdpt only. */
+    c.aim = ps->strategy == RT_BDPT && rt_scene_target_count(scene) > 0 ? ps->emit_aim : 0.0;
     /* The centre of the image plane at distance 1 is the view axis. */
     vec3 centre = vec3_add(camera->corner,
                            vec3_add(vec3_scale(camera->du, 0.5 * (double)camera->width),

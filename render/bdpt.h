@@ -10,8 +10,11 @@
  * connection. Veach's thesis [@veach1997] (1997; its chapter 10, "Bidirectional path tracing")
  * does both at once:
  *   - a light subpath y_0 .. y_{s-1}: y_0 uniform on the area of an
- *     emitter chosen uniformly (rt_scene_emitters), then cosine-weighted
- *     emission and the materials' own sampling;
+ *     emitter chosen uniformly (rt_scene_emitters), then an emitted
+ *     direction (cosine-weighted, or with probability
+ *     rt_path_settings.emit_aim toward the light list's entries that do not
+ *     emit, the book's glass sphere: rt_bdpt_emit_direction) and the
+ *     materials' own sampling;
  *   - a camera subpath z_0 .. z_{t-1}: z_0 the pinhole, then the camera
  *     ray of the pixel sample and the materials' sampling;
  *   - every strategy (s, t), s + t - 1 <= max_depth segments: the two
@@ -115,6 +118,9 @@ typedef struct rt_bdpt_ctx {
     const rt_camera *camera;
     vec3 forward;      /* unit view axis */
     double pixel_area; /* A_pix on the plane at distance 1 */
+    /* The emission aim in force: for RT_BDPT in a scene with targets
+     * (rt_scene_targets) ps->emit_aim, else 0 (cosine emission alone). */
+    double aim;
     /* False in a render: shadow rays are traced four at a time
      * (rt_scene_hit4). True traces each alone when it is made, the
      * reference that gives the same image bit for bit
@@ -165,6 +171,22 @@ static inline bool rt_bdpt_weighted(const rt_path_settings *ps)
  * neg.mis_double (the negative-control hook of rt_path_settings) counts
  * strategy mis_double - 1 twice in the sum. */
 double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, int s);
+
+/* The first direction of a light subpath from the point p of an emitter
+ * with unit normal n, from one 2D request (u1, u2). With c->aim = a > 0:
+ * u1 < a chooses the targets (rt_scene_targets), u1 / a picks one of them
+ * uniformly and, rescaled, draws with u2 a direction toward it
+ * (rt_light_generate: a point of a quad, a direction in a sphere's cone);
+ * otherwise (u1 - a) / (1 - a) and u2 draw a cosine-weighted direction
+ * about n. With a = 0, the cosine direction from (u1, u2) unchanged. The
+ * direction may point below the emitter, where it emits nothing. */
+vec3 rt_bdpt_emit_direction(const rt_bdpt_ctx *c, vec3 p, vec3 n, rt_sampler *sampler);
+
+/* The density per unit solid angle of rt_bdpt_emit_direction for the
+ * unit direction d: the mixture (1 - a) max(cos, 0) / pi
+ * + a rt_lights_value(targets, p, d), cos = n . d. Every density of
+ * emission in the weights is this one. */
+double rt_bdpt_emit_pdf(const rt_bdpt_ctx *c, vec3 p, vec3 n, vec3 d);
 
 /* One sample of the pixel whose camera ray is camera_ray: both subpaths,
  * then every strategy that the settings select (ps->strategy RT_BDPT:

@@ -29,6 +29,7 @@
 
 #include "render/bdpt.h"
 #include "render/leaf4.h"
+#include "render/lights.h"
 
 /* The unit direction from the camera to p (*dir) and its cosine with the
  * view axis (*cos_theta); false behind the camera. */
@@ -77,6 +78,14 @@ int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, i
 int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex *v, int max_n,
                        uint64_t *segments);
 
+/* rt_bdpt_emit_direction and rt_bdpt_emit_pdf with the targets prepared
+ * from the emitting point (rt_lights_prepare over rt_scene_targets; at is
+ * read only when c->aim > 0): a light subpath prepares them once for its
+ * direction, its throughput and the weights of its joins. */
+vec3 rt_bdpt_emit_direction_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n,
+                               rt_sampler *sampler);
+double rt_bdpt_emit_pdf_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n, vec3 d);
+
 /* --- densities and weights (bdpt_mis.c) ------------------------------- */
 
 /* The density per unit area with which a light subpath starts at x:
@@ -105,6 +114,9 @@ typedef struct rt_bdpt_subpath_pdfs {
     bool jl[RT_BDPT_MAX_DEPTH], jc[RT_BDPT_MAX_DEPTH + 1];
     double la[RT_BDPT_MAX_DEPTH], ce[RT_BDPT_MAX_DEPTH + 1];
     bool ce_any[RT_BDPT_MAX_DEPTH + 1];
+    /* With an emission aim (c->aim > 0): the targets seen from light[0],
+     * prepared once for the emission densities of its joins. */
+    rt_lights_at emit_at;
 } rt_bdpt_subpath_pdfs;
 
 /* Fills *sp for the light subpath light[0..nl) and the camera subpath

@@ -24,6 +24,25 @@ double rt_bdpt_origin_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x)
     return 1.0 / ((double)rt_scene_emitter_count(c->scene) * emitter_area(e));
 }
 
+/* BEGIN SNIPPET emit_pdf */
+double rt_bdpt_emit_pdf_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n, vec3 d)
+{
+    double cos_e = vec3_dot(n, d);
+    double cosine = cos_e > 0.0 ? cos_e * MC_INV_PI : 0.0;
+    if (!(c->aim > 0.0))
+        return cosine;
+    return (1.0 - c->aim) * cosine + c->aim * rt_lights_at_value(at, d);
+}
+/* END SNIPPET emit_pdf */
+
+double rt_bdpt_emit_pdf(const rt_bdpt_ctx *c, vec3 p, vec3 n, vec3 d)
+{
+    rt_lights_at at;
+    if (c->aim > 0.0)
+        rt_lights_prepare(&at, rt_scene_targets(c->scene), rt_scene_target_count(c->scene), p);
+    return rt_bdpt_emit_pdf_at(c, &at, n, d);
+}
+
 /* Whether x is a vertex a shadow ray may join (i its place in a path of
  * n vertices): the camera, the start of a light subpath, a Lambertian
  * surface. */
@@ -38,13 +57,13 @@ static bool joinable(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int i, int n
 
 /* Which walk makes the next vertex from a vertex: a subpath's own
  * (cosine sampling at a Lambertian surface, from either end) or the
- * start of a light subpath (cosine emission). */
+ * start of a light subpath (emission, rt_bdpt_emit_pdf). */
 typedef enum role { AS_LIGHT, AS_CAMERA, AS_ORIGIN } role;
 
 /* The density per unit solid angle with which `from` sends its next ray
  * along the unit direction dir (toward the next vertex) in role r: the
- * film's for the camera, cosine emission from the start of a light
- * subpath, a Lambertian surface's sampling density; 0 through a specular
+ * film's for the camera, emission's (rt_bdpt_emit_pdf) from the start of
+ * a light subpath, a Lambertian surface's sampling density; 0 through a specular
  * vertex (the caller counts that as 1). */
 static double dir_pdf_along(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r, vec3 dir)
 {
@@ -57,10 +76,8 @@ static double dir_pdf_along(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, ro
         double film = c->pixel_area * (double)c->camera->width * (double)c->camera->height;
         return 1.0 / (film * cos_theta * cos_theta * cos_theta);
     }
-    if (r == AS_ORIGIN || from->kind == RT_BDPT_LIGHT) {
-        double cos_e = vec3_dot(from->kind == RT_BDPT_LIGHT ? from->ng : from->ns, dir);
-        return cos_e > 0.0 ? cos_e * MC_INV_PI : 0.0;
-    }
+    if (r == AS_ORIGIN || from->kind == RT_BDPT_LIGHT)
+        return rt_bdpt_emit_pdf(c, from->p, from->kind == RT_BDPT_LIGHT ? from->ng : from->ns, dir);
     if (from->delta || !from->m || from->m->kind != RT_MAT_LAMBERT)
         return 0.0;
     return rt_cosine_value(from->ns, dir);
@@ -180,14 +197,21 @@ static double area_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r,
     return remap0(to_area(dir_pdf(c, from, r, to->p), from->p, to));
 }
 
+/* The density per unit solid angle pdf_dir of the direction along the
+ * segment g toward `to` as a density per unit area at `to`, remapped:
+ * to_area's numbers, |cos| at `to` read off g.d, whose sign does not
+ * matter. */
+static double area_along(double pdf_dir, const rt_bdpt_vertex *to, const rt_bdpt_segment *g)
+{
+    return remap0(pdf_dir * fabs(vec3_dot(to->ng, g->d)) / (g->dist * g->dist_sq));
+}
+
 /* area_pdf over the segment g between the two vertices, the direction
- * from `from` toward `to` given (g.dir or its negation): to_area's
- * numbers, |cos| at `to` read off g.d, whose sign does not matter. */
+ * from `from` toward `to` given (g.dir or its negation). */
 static double area_pdf_along(const rt_bdpt_ctx *c, const rt_bdpt_vertex *from, role r,
                              const rt_bdpt_vertex *to, vec3 dir, const rt_bdpt_segment *g)
 {
-    double pdf_dir = dir_pdf_along(c, from, r, dir);
-    return remap0(pdf_dir * fabs(vec3_dot(to->ng, g->d)) / (g->dist * g->dist_sq));
+    return area_along(dir_pdf_along(c, from, r, dir), to, g);
 }
 
 void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int nl,
@@ -196,6 +220,9 @@ void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int n
     /* Each segment gives the densities at both its ends: lf[i + 1] and
      * lr[i] between light vertices i and i + 1, cf[j + 1] and cr[j]
      * between camera vertices j and j + 1. */
+    if (nl > 0 && c->aim > 0.0)
+        rt_lights_prepare(&sp->emit_at, rt_scene_targets(c->scene), rt_scene_target_count(c->scene),
+                          light[0].p);
     for (int i = 0; i < nl; i++) {
         if (i == 0)
             sp->lf[0] = remap0(rt_bdpt_origin_pdf(c, &light[0]));
@@ -290,7 +317,7 @@ double rt_bdpt_join_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
  * plus la[s-2]), the camera side's (pl[s] / pc[s])^2 times (strategy
  * s + 1's term plus ce[t-2]); weight_from's loops, unrolled into the
  * running sums. With s = 0 the first two camera-side densities are the
- * lamp's (its area density, then cosine emission), not cached ones. On a
+ * lamp's (its area density, then its emission density), not cached ones. On a
  * path of three vertices the splat's term (t' = 1) carries c^2 = splat
  * (weight_from's scale); on longer ones c = 1, and no running sum holds a
  * scaled term. */
@@ -323,7 +350,11 @@ static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *s
     bool ok_l = s == 1 || (sp->jl[s - 2] && sp->jl[s - 1]);
     double sum = ql * ql * ((ok_l ? 1.0 : 0.0) + (s >= 2 ? sp->la[s - 2] : 0.0));
     if (t >= 2) {
-        double qc = area_pdf_along(c, y, s == 1 ? AS_ORIGIN : AS_LIGHT, z, g->dir, g) / sp->cf[t - 1];
+        /* From the lamp (s = 1) the emission density, its targets
+         * prepared once per light subpath. */
+        double pdf_dir = s == 1 ? rt_bdpt_emit_pdf_at(c, &sp->emit_at, y->ng, g->dir)
+                                : dir_pdf_along(c, y, AS_LIGHT, g->dir);
+        double qc = area_along(pdf_dir, z, g) / sp->cf[t - 1];
         bool ok_c = sp->jc[t - 1] && sp->jc[t - 2];
         sum += qc * qc * ((ok_c ? (t == 2 ? splat : 1.0) : 0.0) + sp->ce[t - 2]);
     }

@@ -91,7 +91,7 @@ int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, i
     return n;
 }
 
-/* --- the light end: a point on an emitter, then cosine emission ------ */
+/* --- the light end: a point on an emitter, then the emitted direction */
 
 int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex *v, int max_n,
                        uint64_t *segments)
@@ -122,13 +122,50 @@ int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex
     v[0] = y0;
     if (max_n == 1)
         return 1;
-    /* Cosine-weighted emission: radiance Le times cos over the density
-     * cos / pi is Le pi. */
-    rt_sampler_2d(sampler, &u1, &u2);
-    onb frame = onb_from_w(n);
-    vec3 dir = pdf_cosine_direction(&frame, u1, u2);
-    if (!(vec3_dot(dir, n) > 0.0))
+    rt_lights_at at;
+    if (c->aim > 0.0)
+        rt_lights_prepare(&at, rt_scene_targets(s), rt_scene_target_count(s), p);
+    vec3 dir = rt_bdpt_emit_direction_at(c, &at, n, sampler);
+    double cos_e = vec3_dot(dir, n);
+    if (!(cos_e > 0.0))
         return 1;
-    return rt_bdpt_walk(c, rt_ray_make(p, dir), vec3_scale(y0.beta, MC_PI), v, 1, max_n,
+    /* Radiance Le times cos over the density of the direction. Cosine
+     * emission alone (no aim) cancels the cosine: Le pi. */
+    double scale = c->aim > 0.0 && !c->ps->neg.emit_aim_cosine_beta
+                       ? cos_e / rt_bdpt_emit_pdf_at(c, &at, n, dir)
+                       : MC_PI;
+    return rt_bdpt_walk(c, rt_ray_make(p, dir), vec3_scale(y0.beta, scale), v, 1, max_n,
                         c->ps->max_depth + 2, sampler, segments);
+}
+
+/* BEGIN SNIPPET emit_aim */
+vec3 rt_bdpt_emit_direction_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n,
+                               rt_sampler *sampler)
+{
+    double u1, u2;
+    rt_sampler_2d(sampler, &u1, &u2);
+    if (c->aim > 0.0) {
+        /* u1 < aim chooses the targets, and u1 rescaled to [0, 1) is
+         * uniform again given the choice: it picks the target (uniformly,
+         * as rt_lights_at_value averages) and is the first uniform of its
+         * direction. */
+        if (u1 < c->aim) {
+            double v = u1 / c->aim * (double)at->n;
+            int i = v < (double)(at->n - 1) ? (int)v : at->n - 1;
+            return rt_light_generate(&at->lights[i], at->origin, at->axis[i], at->one_minus_cos[i],
+                                     v - (double)i, u2);
+        }
+        u1 = (u1 - c->aim) / (1.0 - c->aim);
+    }
+    onb frame = onb_from_w(n);
+    return pdf_cosine_direction(&frame, u1, u2);
+}
+/* END SNIPPET emit_aim */
+
+vec3 rt_bdpt_emit_direction(const rt_bdpt_ctx *c, vec3 p, vec3 n, rt_sampler *sampler)
+{
+    rt_lights_at at;
+    if (c->aim > 0.0)
+        rt_lights_prepare(&at, rt_scene_targets(c->scene), rt_scene_target_count(c->scene), p);
+    return rt_bdpt_emit_direction_at(c, &at, n, sampler);
 }

@@ -26,6 +26,7 @@ rt_path_settings rt_path_settings_default(rt_strategy strategy)
         .pdf_objects = false,
         .bdpt_s = 0,
         .bdpt_t = 0,
+        .emit_aim = RT_EMIT_AIM_DEFAULT,
     };
 }
 

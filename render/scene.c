@@ -43,6 +43,8 @@ struct rt_scene {
     rt_prim emitters[RT_MAX_LIGHTS];
     rt_light fast_emitters[RT_MAX_LIGHTS];
     int n_emitters;
+    rt_light fast_targets[RT_MAX_LIGHTS]; /* the light list's entries that do not emit */
+    int n_targets;
 };
 
 /* Makes room for one more element of `size` bytes in *arr. */
@@ -322,6 +324,8 @@ int rt_scene_build(rt_scene *s)
         if (e.x != 0.0 || e.y != 0.0 || e.z != 0.0) {
             s->emitters[s->n_emitters] = s->lights[i];
             s->fast_emitters[s->n_emitters++] = s->fast_lights[i];
+        } else {
+            s->fast_targets[s->n_targets++] = s->fast_lights[i];
         }
     }
     s->built = true;
@@ -450,6 +454,8 @@ const rt_light *rt_scene_lights(const rt_scene *s) { return s->fast_lights; }
 int rt_scene_emitter_count(const rt_scene *s) { return s->n_emitters; }
 const rt_prim *rt_scene_emitter_prims(const rt_scene *s) { return s->emitters; }
 const rt_light *rt_scene_emitters(const rt_scene *s) { return s->fast_emitters; }
+int rt_scene_target_count(const rt_scene *s) { return s->n_targets; }
+const rt_light *rt_scene_targets(const rt_scene *s) { return s->fast_targets; }
 double rt_scene_t_min(const rt_scene *s) { return s->t_min; }
 vec3 rt_scene_background(const rt_scene *s) { return s->background; }
 int rt_scene_prim_count(const rt_scene *s) { return s->n_prims; }

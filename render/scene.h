@@ -148,6 +148,14 @@ int rt_scene_emitter_count(const rt_scene *s);
 const rt_prim *rt_scene_emitter_prims(const rt_scene *s);
 const rt_light *rt_scene_emitters(const rt_scene *s);
 
+/* The other entries of the light list, those that do not emit (the
+ * book's glass sphere), in light-list order with the constants of
+ * render/lights.h: what bidirectional light subpaths may aim their first
+ * direction at (rt_path_settings.emit_aim), since light through them is
+ * what only a light subpath finds. */
+int rt_scene_target_count(const rt_scene *s);
+const rt_light *rt_scene_targets(const rt_scene *s);
+
 /* rt_scene_lights_pdf over the emitters only (at least one). */
 pdf rt_scene_emitters_pdf(const rt_scene *s, vec3 origin, pdf *items, const pdf **ptrs);
 

@@ -563,6 +563,7 @@ static const matrix_row matrix_rows[] = {
     {0, "--samples", K_COUNT, "1"}, {0, "--max-depth", K_WHOLE, "3"}, {0, "--strategy", K_CHOICE, "mis"},
     {0, "--threads", K_WHOLE, "1"}, {0, "--seed", K_SEED, "2"}, {0, "-o", K_PATH, "/tmp/mcbox-matrix.png"},
     {0, "--gamma", K_CHOICE, "srgb"}, {0, "--csv", K_FLAG, NULL}, {0, "--roulette", K_FLAG, NULL},
+    {0, "--emit-aim", K_REAL, "0.2"},
     {1, "--samples", K_COUNT, "100"}, {1, "--seed", K_SEED, "2"}, {1, "--method", K_CHOICE, "all"},
     {1, "--csv", K_FLAG, NULL},
     {2, "--samples", K_COUNT, "100"}, {2, "--seed", K_SEED, "2"}, {2, "--csv", K_FLAG, NULL},

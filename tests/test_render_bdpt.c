@@ -22,10 +22,15 @@
 #include <string.h>
 
 #include "mc/chi2.h"
+#include "mc/constants.h"
+#include "mc/onb.h"
 #include "mc/stats.h"
+#include "pdf/pdf.h"
 #include "render/bdpt.h"
+#include "render/lights.h"
 #include "render/render.h"
 #include "render/scenes.h"
+#include "tests/support/chi2_harness.h"
 #include "tests/support/negctl.h"
 
 enum { W = 24, GRID = 3, CELL = W / GRID, REGIONS = GRID * GRID, BATCHES = 16 };
@@ -216,7 +221,11 @@ static void test_mis_weights_sum_to_one(void **state)
  * threshold somewhere. On book: bdpt that keeps in its strategies the
  * paths it also estimates apart (the lamp seen directly or through glass,
  * E S* L; the caustic seen through the sphere, E (S+ D)+ S+ L), each
- * counted twice, must be caught the same way. */
+ * counted twice, must be caught the same way, and so must bdpt whose light
+ * subpaths aimed at the glass sphere (the default emission) carry cosine
+ * emission's throughput. The bdpt renders of book and book-metal use the
+ * default aim (RT_EMIT_AIM_DEFAULT), so their agreement is its test of
+ * bias. */
 /* Fails unless every region-channel of a agrees with ref, the mixture:
  * max |t| < thr. */
 static void expect_agree(const char *what, const regions *a, const regions *ref, double thr,
@@ -270,10 +279,12 @@ static void test_agree_with_mixture(void **state)
             expect_caught(nc, "bdpt counting next-event estimation twice", &bad2, &ref, thr);
         }
         if (i == 1) {
-            rt_path_settings rr = rt_path_settings_default(RT_BDPT), seen = rr, through = rr;
+            rt_path_settings rr = rt_path_settings_default(RT_BDPT), seen = rr, through = rr,
+                             aimed = rr;
             rr.russian_roulette = true;
             seen.neg.seen_twice = true;
             through.neg.through_twice = true;
+            aimed.neg.emit_aim_cosine_beta = true;
             regions with_rr = batched(s, cp, rr, 64, seed + 160u);
             expect_agree("book: bdpt with Russian roulette", &with_rr, &ref, thr, seed);
             /* The floor under the sphere seen through it, close up. */
@@ -288,6 +299,9 @@ static void test_agree_with_mixture(void **state)
                           &ref, thr);
             expect_caught(nc, "bdpt counting the caustic seen through the sphere twice", &bad2, &ref2,
                           thr);
+            regions bad3 = batched(s, cp, aimed, 64, seed + 197u);
+            expect_caught(nc, "bdpt aiming light subpaths at the glass with cosine emission's weight",
+                          &bad3, &ref, thr);
         }
         rt_scene_destroy(s);
     }
@@ -389,6 +403,118 @@ static void test_threads_and_cancel(void **state)
     }
 }
 
+/* --- the aimed emission ------------------------------------------------ */
+
+/* A light subpath's first direction from one point of the book's lamp,
+ * charted as (cos theta, phi) about the axis of the glass sphere's cone
+ * (d omega = d cos d phi: the density per unit solid angle is the chart's).
+ * The cos cells are 0.05 wide and placed so that cos theta_max is a cell
+ * edge: the cone's jump then runs along cells, and the quadrature of each
+ * cell meets only the cosine part's kink at the lamp's horizon. */
+typedef struct emit_chart {
+    const rt_bdpt_ctx *c;
+    vec3 p, n, axis;
+    onb frame;
+    bool claim_cosine; /* the negative control's claim: cosine emission */
+} emit_chart;
+
+static void emit_sample(mc_rng *rng, void *ctx, double out[2])
+{
+    const emit_chart *e = ctx;
+    rt_sampler s = rt_sampler_from_rng(*rng);
+    vec3 d = onb_to_local(&e->frame, rt_bdpt_emit_direction(e->c, e->p, e->n, &s));
+    *rng = s.rng;
+    double phi = atan2(d.y, d.x);
+    out[0] = d.z;
+    out[1] = phi < 0.0 ? phi + 2.0 * MC_PI : phi;
+}
+
+static double emit_density(const double x[2], void *ctx)
+{
+    const emit_chart *e = ctx;
+    if (!(x[0] >= -1.0 && x[0] <= 1.0))
+        return 0.0;
+    double sin_t = sqrt(fmax(0.0, 1.0 - x[0] * x[0]));
+    vec3 d = onb_to_world(&e->frame, vec3_make(sin_t * cos(x[1]), sin_t * sin(x[1]), x[0]));
+    if (e->claim_cosine) {
+        double cos_e = vec3_dot(d, e->n);
+        return cos_e > 0.0 ? cos_e * MC_INV_PI : 0.0;
+    }
+    return rt_bdpt_emit_pdf(e->c, e->p, e->n, d);
+}
+
+/* rt_bdpt_emit_direction against rt_bdpt_emit_pdf on the book scene with
+ * the default aim (RT_EMIT_AIM_DEFAULT), from the lamp point at (0.3, 0.6)
+ * of its edges: chi-square of 10^6 directions (PCG32 seed 331) in about 40
+ * x 64 cells of the chart above at chi2_suite_alpha(); the density's
+ * integral over the chart within 1e-6 of 1; every direction of unit
+ * length within 1e-12 (10^5 of them). Negative control: the same
+ * directions against cosine emission's density (the aim forgotten in the
+ * weights) must be rejected. A scene without targets (lambert) keeps
+ * cosine emission: its bdpt image is the same bytes with the aim at 0.1
+ * and at 0. */
+static void test_emit_aim_density(void **state)
+{
+    negctl *nc = *state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    rt_camera cam = rt_camera_make(cp, W, W);
+    rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+    rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam);
+    assert_true(rt_scene_target_count(s) == 1 && c.aim == RT_EMIT_AIM_DEFAULT);
+    const rt_prim *lamp = &rt_scene_emitter_prims(s)[0];
+    const rt_light *ball = &rt_scene_targets(s)[0];
+    emit_chart e = {.c = &c,
+                    .p = vec3_add(lamp->as.quad.q, vec3_add(vec3_scale(lamp->as.quad.u, 0.3),
+                                                            vec3_scale(lamp->as.quad.v, 0.6))),
+                    .n = lamp->as.quad.normal};
+    double cos_max, omc;
+    e.axis = pdf_sphere_cone(e.p, ball->center, ball->radius, &cos_max, &omc);
+    e.frame = onb_from_w(e.axis);
+    const double h = 0.05;
+    int below = (int)ceil((cos_max + 1.0) / h), above = (int)ceil((1.0 - cos_max) / h);
+    chi2_spec spec = {"bdpt emission aimed at the glass sphere",
+                      {2, {cos_max - below * h, 0.0}, {cos_max + above * h, 2.0 * MC_PI},
+                       {below + above, 64}, emit_sample, emit_density, &e}};
+    uint64_t seed = mc_test_seed(331u);
+    chi2_outcome o = chi2_run(&spec, 1000000u, seed, chi2_suite_alpha());
+    chi2_print(&spec, &o);
+    assert_seeded(!o.reject, seed);
+    double integral = chi2_integrate_pdf(&spec);
+    printf("integral of the emission density over the sphere: %.12f\n", integral);
+    assert_true(fabs(integral - 1.0) < 1e-6);
+    mc_rng rng = mc_rng_derive(seed, 1u);
+    for (int k = 0; k < 100000; k++) {
+        rt_sampler sm = rt_sampler_from_rng(rng);
+        vec3 d = rt_bdpt_emit_direction(&c, e.p, e.n, &sm);
+        rng = sm.rng;
+        assert_true(fabs(vec3_length(d) - 1.0) < 1e-12);
+    }
+    e.claim_cosine = true;
+    chi2_spec bad = spec;
+    bad.name = "negative control: aimed emission judged by cosine emission's density";
+    chi2_outcome ob = chi2_run(&bad, 1000000u, seed, chi2_suite_alpha());
+    chi2_print(&bad, &ob);
+    if (!negctl_record(nc, "aimed emission against cosine emission's density", "chi-square", ob.reject))
+        fail_msg("the cosine claim was not rejected: p = %.3g", ob.r.pvalue);
+    rt_scene_destroy(s);
+
+    rt_scene *l = rt_scene_named("lambert", &cp);
+    assert_int_equal(rt_scene_target_count(l), 0);
+    rt_image *a = rt_image_create(W, W), *b = rt_image_create(W, W);
+    rt_render_job job = rt_render_job_default(l, rt_camera_make(cp, W, W));
+    job.path = rt_path_settings_default(RT_BDPT);
+    job.spp = 4;
+    job.threads = 2;
+    assert_int_equal(rt_render(&job, a, NULL), 0);
+    job.path.emit_aim = 0.0;
+    assert_int_equal(rt_render(&job, b, NULL), 0);
+    assert_memory_equal(a->px, b->px, sizeof *a->px * (size_t)(W * W));
+    rt_image_destroy(a);
+    rt_image_destroy(b);
+    rt_scene_destroy(l);
+}
+
 /* Bad strategy names are refused. */
 static void test_strategy_parse(void **state)
 {
@@ -409,6 +535,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_strategy_parse),
         cmocka_unit_test(test_mis_weights_sum_to_one),
+        cmocka_unit_test(test_emit_aim_density),
         cmocka_unit_test(test_threads_and_cancel),
         cmocka_unit_test(test_unweighted_strategies_agree_per_length),
         cmocka_unit_test(test_agree_with_mixture),
