@@ -413,8 +413,8 @@ static void test_threads_and_cancel(void **state)
  * cell meets only the cosine part's kink at the lamp's horizon. */
 typedef struct emit_chart {
     const rt_bdpt_ctx *c;
-    vec3 p, n, axis;
-    onb frame;
+    vec3 p, n;
+    onb frame; /* about the cone's axis */
     bool claim_cosine; /* the negative control's claim: cosine emission */
 } emit_chart;
 
@@ -469,8 +469,7 @@ static void test_emit_aim_density(void **state)
                                                             vec3_scale(lamp->as.quad.v, 0.6))),
                     .n = lamp->as.quad.normal};
     double cos_max, omc;
-    e.axis = pdf_sphere_cone(e.p, ball->center, ball->radius, &cos_max, &omc);
-    e.frame = onb_from_w(e.axis);
+    e.frame = onb_from_w(pdf_sphere_cone(e.p, ball->center, ball->radius, &cos_max, &omc));
     const double h = 0.05;
     int below = (int)ceil((cos_max + 1.0) / h), above = (int)ceil((1.0 - cos_max) / h);
     chi2_spec spec = {"bdpt emission aimed at the glass sphere",
