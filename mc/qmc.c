@@ -291,6 +291,38 @@ double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
 }
 /* END SNIPPET owen_scramble */
 
+mc_permutation_size mc_permutation_size_make(uint32_t n)
+{
+    assert(n >= 1u);
+    uint32_t w = n - 1u;
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    return (mc_permutation_size){n, w, UINT64_MAX / n + 1u};
+}
+
+/* a mod n for a 32-bit a: with c = ceil(2^64 / n), (c a mod 2^64) / 2^64
+ * approximates the fractional part of a / n closely enough that its
+ * product with n, floored, is the remainder, for every a and n below 2^32
+ * (Lemire, Kaser and Kurz 2019, theorem 1: a multiplier of 64 bits
+ * suffices for 32-bit operands). The product's high 64 bits come from
+ * the two 32-bit halves of c a: (hi n 2^32 + lo n) / 2^64 floors to
+ * (hi n + floor(lo n / 2^32)) / 2^32, whose sum cannot overflow. For
+ * n = 1, c = 0 gives 0. */
+uint32_t mc_permutation_remainder(uint32_t a, mc_permutation_size s)
+{
+    uint64_t frac = s.inverse * a;
+    uint64_t hi = frac >> 32, lo = frac & 0xffffffffu;
+    return (uint32_t)((hi * s.n + ((lo * s.n) >> 32)) >> 32);
+}
+
+uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key)
+{
+    return mc_permutation_element_sized(i, mc_permutation_size_make(n), key);
+}
+
 /* Kensler (2013, "Correlated Multi-Jittered Sampling", Pixar technical memo
  * 13-01) [@kensler2013], section 3: a hash that is a bijection on the w-bit integers
  * (w = the bits of n - 1): XOR with key bits, multiplication by odd
@@ -298,15 +330,10 @@ double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
  * 2^w. Values >= n are walked along their cycle until they fall back into
  * [0, n) ("cycle walking"), which keeps the bijection; the final rotation by
  * the key makes the image of any i uniform over the keys. */
-uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key)
+uint32_t mc_permutation_element_sized(uint32_t i, mc_permutation_size size, uint32_t key)
 {
+    uint32_t n = size.n, w = size.mask;
     assert(i < n);
-    uint32_t w = n - 1u;
-    w |= w >> 1;
-    w |= w >> 2;
-    w |= w >> 4;
-    w |= w >> 8;
-    w |= w >> 16;
     do {
         i ^= key;
         i *= 0xe170893du;
@@ -328,9 +355,9 @@ uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key)
         i ^= i >> 5;
     } while (i >= n);
     /* (i + key) mod n without the 32-bit overflow of i + key; key mod n
-     * is a mask when n is a power of two (w = n - 1 then), which spares
-     * the renderer's Sobol requests a division each. */
-    uint64_t r = (uint64_t)i + ((n & w) == 0u ? key & w : key % n);
+     * is a mask when n is a power of two (w = n - 1 then), else two
+     * multiplications instead of a division. */
+    uint64_t r = (uint64_t)i + ((n & w) == 0u ? key & w : mc_permutation_remainder(key, size));
     return (uint32_t)(r >= n ? r - n : r);
 }
 
@@ -345,20 +372,31 @@ uint64_t mc_sobol_padded_key(uint64_t base)
     return seed_mix(base);
 }
 
-double mc_sobol_padded1_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n)
+double mc_sobol_padded1_sized(uint64_t pixel_key, uint32_t dim, uint32_t k, mc_permutation_size n)
 {
     uint64_t h = stream_mix(pixel_key, 2u * (uint64_t)dim);
-    uint32_t index = mc_permutation_element(k, n, (uint32_t)h);
+    uint32_t index = mc_permutation_element_sized(k, n, (uint32_t)h);
     return sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
+}
+
+void mc_sobol_padded2_sized(uint64_t pixel_key, uint32_t dim, uint32_t k, mc_permutation_size n,
+                            double u[2])
+{
+    uint64_t h = stream_mix(pixel_key, 2u * (uint64_t)dim);
+    uint64_t h2 = stream_mix(pixel_key, 2u * (uint64_t)dim + 1u);
+    uint32_t index = mc_permutation_element_sized(k, n, (uint32_t)h);
+    u[0] = sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
+    u[1] = sobol_owen_keyed(index, 1u, (uint32_t)h2);
+}
+
+double mc_sobol_padded1_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n)
+{
+    return mc_sobol_padded1_sized(pixel_key, dim, k, mc_permutation_size_make(n));
 }
 
 void mc_sobol_padded2_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n, double u[2])
 {
-    uint64_t h = stream_mix(pixel_key, 2u * (uint64_t)dim);
-    uint64_t h2 = stream_mix(pixel_key, 2u * (uint64_t)dim + 1u);
-    uint32_t index = mc_permutation_element(k, n, (uint32_t)h);
-    u[0] = sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
-    u[1] = sobol_owen_keyed(index, 1u, (uint32_t)h2);
+    mc_sobol_padded2_sized(pixel_key, dim, k, mc_permutation_size_make(n), u);
 }
 
 double mc_sobol_padded1(uint64_t base, uint32_t dim, uint32_t k, uint32_t n)

@@ -102,6 +102,25 @@ double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
  * bijection of {0, ..., n-1} for every key. */
 uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key);
 
+/* The size n of mc_permutation_element made once for the many requests
+ * of a pixel: the mask of the bits of n - 1, which the cycle walk needs,
+ * and Lemire's multiplier for the remainder key mod n (ceil(2^64 / n);
+ * Lemire, Kaser and Kurz, "Faster remainder by direct computation",
+ * 2019), which replaces a division by two multiplications. */
+typedef struct mc_permutation_size {
+    uint32_t n;       /* >= 1 */
+    uint32_t mask;    /* 2^w - 1, w the bits of n - 1 */
+    uint64_t inverse; /* ceil(2^64 / n) mod 2^64 (0 for n = 1) */
+} mc_permutation_size;
+
+mc_permutation_size mc_permutation_size_make(uint32_t n);
+
+/* a mod size.n by the multiplier: a % size.n, exactly, for every a. */
+uint32_t mc_permutation_remainder(uint32_t a, mc_permutation_size size);
+
+/* mc_permutation_element(i, size.n, key), the same bits. */
+uint32_t mc_permutation_element_sized(uint32_t i, mc_permutation_size size, uint32_t key);
+
 /* Padded Owen-scrambled Sobol, for a path tracer that asks for its
  * dimensions one or two at a time (pbrt-v4's PaddedSobolSampler). `base`
  * names the pixel's sequence: mc_qmc_stream_seed(seed, pixel), hashed once
@@ -125,6 +144,12 @@ void mc_sobol_padded2(uint64_t base, uint32_t dim, uint32_t k, uint32_t n, doubl
 uint64_t mc_sobol_padded_key(uint64_t base);
 double mc_sobol_padded1_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n);
 void mc_sobol_padded2_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n, double u[2]);
+
+/* The keyed requests with the pixel's sample count made once
+ * (mc_permutation_size_make(n)): the same bits. */
+double mc_sobol_padded1_sized(uint64_t pixel_key, uint32_t dim, uint32_t k, mc_permutation_size n);
+void mc_sobol_padded2_sized(uint64_t pixel_key, uint32_t dim, uint32_t k, mc_permutation_size n,
+                            double u[2]);
 
 /* Where the dimensions of a sample come from. */
 typedef enum mc_qmc_method {

@@ -63,8 +63,8 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
         return L;
     /* The camera ray has density W_j over its pixel: beta 1. */
     int nc = lighttrace ? 1
-                        : rt_bdpt_walk(c, camera_ray, cam[0].beta, cam, 1, depth + 1, 0, sampler,
-                                       segments);
+                        : rt_bdpt_walk(c, camera_ray, cam[0].beta, cam, 1, depth + 1, 0,
+                                       RT_BDPT_RR_GAIN_CAMERA, sampler, segments);
     int nl = rt_bdpt_light_walk(c, sampler, light, depth, segments);
     rt_bdpt_subpath_pdfs sp;
     int jd[RT_BDPT_MAX_DEPTH + 1], njd = 0;

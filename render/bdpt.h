@@ -43,9 +43,10 @@
  * sample per pixel sample, and the camera's density is the film's,
  * 1 / (A_film cos^3 theta) with A_film the whole image (Veach 10.3.3).
  * Lambertian surfaces are the only ones that can be joined. With
- * Russian roulette (rt_path_settings; RT_BDPT_RR_START below) both walks
- * stop as the book's integrator's paths do; the weights, functions of the
- * path alone, still sum to 1 over the strategies.
+ * Russian roulette (rt_path_settings; RT_BDPT_RR_START and
+ * RT_BDPT_RR_GAIN_CAMERA below) both walks stop as the book's
+ * integrator's paths do, the camera's less often; the weights, functions
+ * of the path alone, still sum to 1 over the strategies.
  */
 /* The implementation is split along the algorithm's seams into
  * render/bdpt*.c; render/bdpt_internal.h, internal to them, says which
@@ -78,6 +79,25 @@
  * count at 120x120, 8 spp) was 1, 0.93, 0.92, 0.92 on the book's scene
  * and 1, 0.86, 0.80, 0.81 on lambert (docs/performance.md). */
 #define RT_BDPT_RR_START 3
+
+/* Once roulette has begun, a subpath goes on with probability q = min(0.95,
+ * gain x the largest channel of its throughput since its start), and a
+ * survivor's throughput is divided by q. A gain of 1 is the path tracer's
+ * rule (render/roulette.h): a survivor's throughput is back at 1. A larger
+ * gain keeps more subpaths going: their rays and joins cost time, and
+ * the error of the 1 / q weights falls. A light subpath keeps the gain of
+ * 1; the camera subpath's is RT_BDPT_RR_GAIN_CAMERA. Error times cost
+ * against gains of 1 for both (300x300, 16 spp, seeds 1 to 3, against the
+ * 1024-spp references; Callgrind's instructions at 64x64, 16 spp), book
+ * and lambert: camera 2, 0.928 and 0.971; camera 1.5, 0.935 and 0.970;
+ * camera 3, 0.942 and 0.988; no camera roulette, 1.14 and 1.25; both 1.5,
+ * 0.934 and 0.962; camera 2 and light 1.5, 0.923 and 0.958; light 2 alone,
+ * 1.017 and 1.002. At 600x600, 50 spp (median of three interleaved
+ * rounds), camera 2 cut the book scene's MSE by 13.1% for 7.2% more time
+ * (1.07 times the efficiency) and lambert's by 8.8% for 7.9% more; the
+ * light's gain cost more time there than its instructions, and camera 2
+ * with light 1.5 gave 1.05 and 1.04 times (docs/performance.md). */
+#define RT_BDPT_RR_GAIN_CAMERA 2.0
 
 /* The weighted render also plays roulette on its shadow rays: a join or
  * splat worth less than this to a pixel sample (in every channel, if

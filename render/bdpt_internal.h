@@ -66,11 +66,13 @@ static inline rt_bdpt_segment rt_bdpt_segment_make(vec3 a, vec3 b)
 /* --- the subpaths (bdpt_walk.c) --------------------------------------- */
 
 /* Continues a subpath along r from its last vertex v[n - 1] with weight
- * beta, appending a vertex per hit to v, until max_n vertices, a miss or
- * absorption; `segment` is the sampler's segment of the first hit. Adds
- * the rays traced to *segments. Returns the vertex count. */
+ * beta, appending a vertex per hit to v, until max_n vertices, a miss,
+ * absorption or roulette; `segment` is the sampler's segment of the first
+ * hit, rr_gain the subpath's roulette gain (RT_BDPT_RR_GAIN_CAMERA for a
+ * camera subpath, 1 for a light subpath; render/bdpt.h). Adds the rays
+ * traced to *segments. Returns the vertex count. */
 int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, int n, int max_n,
-                 int segment, rt_sampler *sampler, uint64_t *segments);
+                 int segment, double rr_gain, rt_sampler *sampler, uint64_t *segments);
 
 /* The light subpath into v: at most max_n vertices (0 without emitters),
  * its draws from the sampler's segments past the camera subpath's

@@ -37,7 +37,7 @@ static int emitter_of(const rt_scene *s, int prim)
 /* --- both ends: the materials' sampling, one vertex per hit ---------- */
 
 int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, int n, int max_n,
-                 int segment, rt_sampler *sampler, uint64_t *segments)
+                 int segment, double rr_gain, rt_sampler *sampler, uint64_t *segments)
 {
     const rt_scene *s = c->scene;
     const rt_path_settings *ps = c->ps;
@@ -78,14 +78,18 @@ int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, i
          * since the subpath's start: it changes how often a subpath goes
          * on, not what it estimates, and the MIS weights (functions of the
          * path alone) still sum to 1. It starts after RT_BDPT_RR_START
-         * segments, not the path tracer's rr_start. */
+         * segments, not the path tracer's rr_start, and survives with
+         * rr_gain times the path tracer's probability (at most 0.95;
+         * RT_BDPT_RR_GAIN_CAMERA). */
         if (ps->russian_roulette && k + 1 >= RT_BDPT_RR_START) {
-            double q = vec3_max_component(
+            double rel = vec3_max_component(
                 unit_start ? beta : vec3_make(beta.x / start.x, beta.y / start.y, beta.z / start.z));
+            double q = rr_gain * rel;
             q = q < 0.95 ? q : 0.95;
             if (!(q > 0.0) || rt_sampler_1d(sampler) >= q)
                 break;
-            beta = vec3_scale(beta, 1.0 / q);
+            double divide_by = ps->neg.bdpt_roulette_ungained ? (rel < 0.95 ? rel : 0.95) : q;
+            beta = vec3_scale(beta, 1.0 / divide_by);
         }
     }
     return n;
@@ -135,7 +139,7 @@ int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex
                        ? cos_e / rt_bdpt_emit_pdf_at(c, &at, n, dir)
                        : MC_PI;
     return rt_bdpt_walk(c, rt_ray_make(p, dir), vec3_scale(y0.beta, scale), v, 1, max_n,
-                        c->ps->max_depth + 2, sampler, segments);
+                        c->ps->max_depth + 2, 1.0, sampler, segments);
 }
 
 /* BEGIN SNIPPET emit_aim */

@@ -103,6 +103,10 @@ typedef struct rt_negative_controls {
      * (rt_path_settings.emit_aim) carry the throughput of cosine emission,
      * Le pi, instead of Le cos over the mixture's density. */
     bool emit_aim_cosine_beta;
+    /* render/bdpt.h: a camera subpath that survives roulette with the
+     * gain's probability min(0.95, gain x its throughput) divided by the
+     * probability without the gain, min(0.95, its throughput). */
+    bool bdpt_roulette_ungained;
 } rt_negative_controls;
 
 /* Initialise with designated initialisers (or start from

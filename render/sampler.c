@@ -29,7 +29,7 @@ rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, m
     rt_sampler s = rt_sampler_from_rng(rng);
     if (kind == RT_SAMPLER_SOBOL) {
         s.sobol = true;
-        s.n = (uint32_t)spp;
+        s.n = mc_permutation_size_make((uint32_t)spp);
         s.base = mc_sobol_padded_key(mc_qmc_stream_seed(seed, pixel));
     }
     return s;
@@ -37,10 +37,10 @@ rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, m
 
 /* Dimensions are never handed out twice within a sample (a 1D request
  * moves on by one, as pbrt's Get1D does, a 2D request by two), as
- * mc_sobol_padded1_keyed and mc_sobol_padded2_keyed require. */
+ * mc_sobol_padded1_sized and mc_sobol_padded2_sized require. */
 double rt_sampler_sobol_1d(rt_sampler *s)
 {
-    double u = mc_sobol_padded1_keyed(s->base, s->dim, s->k, s->n);
+    double u = mc_sobol_padded1_sized(s->base, s->dim, s->k, s->n);
     s->dim += s->reuse_dim ? 0u : 1u;
     return u;
 }
@@ -48,7 +48,7 @@ double rt_sampler_sobol_1d(rt_sampler *s)
 void rt_sampler_sobol_2d(rt_sampler *s, double *u1, double *u2)
 {
     double u[2];
-    mc_sobol_padded2_keyed(s->base, s->dim, s->k, s->n, u);
+    mc_sobol_padded2_sized(s->base, s->dim, s->k, s->n, u);
     *u1 = u[0];
     *u2 = u[1];
     s->dim += 2u;

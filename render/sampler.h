@@ -14,11 +14,13 @@
  *                          the first two dimensions of Sobol point
  *                          perm(k), with the index permutation perm and the
  *                          Owen scrambles keyed by a hash of (seed, p,
- *                          dimension) (mc_sobol_padded1_keyed and
- *                          mc_sobol_padded2_keyed, the pixel's part of the
+ *                          dimension) (mc_sobol_padded1_sized and
+ *                          mc_sobol_padded2_sized, the pixel's part of the
  *                          hash computed once per pixel,
- *                          mc_sobol_padded_key). Each request is a stratified set
- *                          over the pixel's samples; requests differ in
+ *                          mc_sobol_padded_key, and its sample count
+ *                          made once, mc_permutation_size_make). Each
+ *                          request is a stratified set over the pixel's
+ *                          samples; requests differ in
  *                          their permutations and scrambles, which makes
  *                          them independent of one another, so the
  *                          estimate stays unbiased.
@@ -43,6 +45,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "mc/qmc.h"
 #include "mc/rng.h"
 
 typedef enum rt_sampler_kind {
@@ -83,7 +86,8 @@ typedef struct rt_sampler {
      * from the job's path.neg.sampler_reuse_dim (render/integrator.h). */
     bool reuse_dim;
     uint32_t dim; /* sobol: the next dimension of this sample */
-    uint32_t k, n; /* sobol: this sample's index and the pixel's sample count */
+    uint32_t k;    /* sobol: this sample's index */
+    mc_permutation_size n; /* sobol: the pixel's sample count, made once */
     uint64_t base; /* sobol: mc_sobol_padded_key(mc_qmc_stream_seed(seed, pixel)) */
 } rt_sampler;
 
@@ -91,7 +95,7 @@ typedef struct rt_sampler {
  * and the tests' way to call the integrator with a stream). */
 static inline rt_sampler rt_sampler_from_rng(mc_rng rng)
 {
-    rt_sampler s = {rng, false, false, 0, 0, 1, 0};
+    rt_sampler s = {rng, false, false, 0, 0, {1, 0, 0}, 0};
     return s;
 }
 

@@ -335,7 +335,7 @@ static int row_door(const cat_row *row, const cat_case *tc, bool samples, const 
  * 0.01 is shared over all of them (Sidak, --tests), so a correct catalog
  * fails this test with probability 0.01.
  * Every negative control of the catalog is rejected through both doors at
- * the same per-test level with 10^5 samples, seed 11 + its position. */
+ * the same per-test level with 2 x 10^4 samples, seed 11 + its position. */
 static void test_check_cli_every_row(void **state)
 {
     negctl *t = *state;
@@ -375,14 +375,16 @@ static void test_check_cli_every_row(void **state)
     for (size_t i = 0; i < cat_negative_count(); i++) {
         const cat_row *row = cat_negative_at(i);
         /* Phong's n + 1 against n is subtle at the row's n = 40 (the C
-         * API's test shows it with 10^6 samples); at n = 3, 10^5 do. */
+         * API's test shows it with 10^6 samples); at n = 3, 2 x 10^4 do
+         * (statistic 793 on 84 degrees of freedom, p 6e-116; the others
+         * give statistics of 5000 and more on 55 to 98). */
         cat_case neg = {.name = row->name,
                         .params = strcmp(row->name, "wrong-phong-exponent") == 0 ? "n=3" : NULL};
         for (int door = 0; door < 2; door++) {
             char name[96];
             snprintf(name, sizeof name, "catalog %s", row->name);
             all &= negctl_record(t, name, door ? "mcbox-check --samples" : "mcbox-check --exec",
-                                 row_door(row, &neg, door == 1, "1e5", 11u + i, tests) == 1);
+                                 row_door(row, &neg, door == 1, "2e4", 11u + i, tests) == 1);
         }
     }
     assert_int_equal(failures, 0);

@@ -551,6 +551,35 @@ static void test_qmc_permutation_element(void **state)
                        mc_test_seed(5008u));
 }
 
+/* mc_permutation_remainder is a % n: for 2 x 10^6 random pairs (a, n),
+ * half of them with n < 2^16, and at the edges (n = 1, 2, 3, 2^k - 1,
+ * 2^k + 1, 2^32 - 1 against a = 0, 1, n - 1, n, n + 1, 2n - 1, 2^32 - 2,
+ * 2^32 - 1). Exact comparisons: any difference fails. */
+static void test_qmc_permutation_remainder(void **state)
+{
+    (void)state;
+    mc_rng rng = mc_rng_derive(mc_test_seed(5011u), 0u);
+    long bad = 0;
+    for (int k = 0; k < 2000000; k++) {
+        uint32_t a = mc_rng_u32(&rng), n = mc_rng_u32(&rng);
+        if (k % 2)
+            n >>= 16;
+        n += n == 0u;
+        bad += mc_permutation_remainder(a, mc_permutation_size_make(n)) != a % n;
+    }
+    static const uint32_t edges_n[] = {1u, 2u, 3u, 5u, 7u, 50u, 100u, 255u, 257u, 65535u, 65537u,
+                                       0x7fffffffu, 0x80000001u, 0xfffffffeu, 0xffffffffu};
+    for (size_t j = 0; j < sizeof edges_n / sizeof edges_n[0]; j++) {
+        uint32_t n = edges_n[j];
+        mc_permutation_size s = mc_permutation_size_make(n);
+        const uint32_t as[] = {0u, 1u, n - 1u, n, n + 1u, 2u * n - 1u, 0xfffffffeu, 0xffffffffu};
+        for (size_t i = 0; i < sizeof as / sizeof as[0]; i++)
+            bad += mc_permutation_remainder(as[i], s) != as[i] % n;
+    }
+    printf("remainder by multiplication against %%: %ld differences\n", bad);
+    assert_int_equal(bad, 0);
+}
+
 /* For n = 2^m (m = 0..10) the n samples of a pixel in every pair form a
  * (0,m,2)-net, for several pixels and pairs; different pairs of one pixel
  * visit the Sobol indices in different orders; points are in [0,1). */
@@ -717,6 +746,7 @@ int main(void)
         cmocka_unit_test(test_qmc_scrambled_points_uniform),
         cmocka_unit_test(test_qmc_convergence_rates),
         cmocka_unit_test(test_qmc_permutation_element),
+        cmocka_unit_test(test_qmc_permutation_remainder),
         cmocka_unit_test(test_qmc_first_dimensions_closed_form),
         cmocka_unit_test(test_qmc_padded_pairs),
         cmocka_unit_test(test_qmc_owen_nested),

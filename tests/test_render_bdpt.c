@@ -223,9 +223,12 @@ static void test_mis_weights_sum_to_one(void **state)
  * E S* L; the caustic seen through the sphere, E (S+ D)+ S+ L), each
  * counted twice, must be caught the same way, and so must bdpt whose light
  * subpaths aimed at the glass sphere (the default emission) carry cosine
- * emission's throughput. The bdpt renders of book and book-metal use the
- * default aim (RT_EMIT_AIM_DEFAULT), so their agreement is its test of
- * bias. */
+ * emission's throughput, and bdpt with roulette whose survivors are
+ * divided by the survival probability without the camera's gain
+ * (RT_BDPT_RR_GAIN_CAMERA). The bdpt renders of book
+ * and book-metal use the default aim (RT_EMIT_AIM_DEFAULT), so their
+ * agreement is its test of bias; book's render with roulette is the
+ * gains'. */
 /* Fails unless every region-channel of a agrees with ref, the mixture:
  * max |t| < thr. */
 static void expect_agree(const char *what, const regions *a, const regions *ref, double thr,
@@ -280,8 +283,10 @@ static void test_agree_with_mixture(void **state)
         }
         if (i == 1) {
             rt_path_settings rr = rt_path_settings_default(RT_BDPT), seen = rr, through = rr,
-                             aimed = rr;
+                             aimed = rr, ungained = rr;
             rr.russian_roulette = true;
+            ungained.russian_roulette = true;
+            ungained.neg.bdpt_roulette_ungained = true;
             seen.neg.seen_twice = true;
             through.neg.through_twice = true;
             aimed.neg.emit_aim_cosine_beta = true;
@@ -302,6 +307,9 @@ static void test_agree_with_mixture(void **state)
             regions bad3 = batched(s, cp, aimed, 64, seed + 197u);
             expect_caught(nc, "bdpt aiming light subpaths at the glass with cosine emission's weight",
                           &bad3, &ref, thr);
+            regions bad4 = batched(s, cp, ungained, 64, seed + 199u);
+            expect_caught(nc, "bdpt's roulette dividing by the survival probability without its gain",
+                          &bad4, &ref, thr);
         }
         rt_scene_destroy(s);
     }

@@ -931,7 +931,8 @@ static void test_estimated_apart_only_s0(void **state)
                 rt_ray r = rt_camera_ray(&cam, (double)(idx % PW) + mc_rng_uniform(&sampler.rng),
                                          (double)(idx / PW) + mc_rng_uniform(&sampler.rng));
                 uint64_t seg = 0;
-                int n = rt_bdpt_walk(&c, r, v[0].beta, v, 1, ps.max_depth + 1, 0, &sampler, &seg);
+                int n = rt_bdpt_walk(&c, r, v[0].beta, v, 1, ps.max_depth + 1, 0,
+                                             RT_BDPT_RR_GAIN_CAMERA, &sampler, &seg);
                 int nl = rt_bdpt_light_walk(&c, &sampler, light, ps.max_depth, &seg);
                 rt_bdpt_subpath_pdfs sp;
                 rt_bdpt_cache_pdfs(&c, light, nl, v, n, &sp);
