@@ -300,19 +300,22 @@ mc_permutation_size mc_permutation_size_make(uint32_t n)
     w |= w >> 4;
     w |= w >> 8;
     w |= w >> 16;
-    return (mc_permutation_size){n, w, UINT64_MAX / n + 1u};
+    /* A power of two takes its remainder by the mask: no division. */
+    return (mc_permutation_size){n, w, (n & w) == 0u ? 0u : UINT64_MAX / n + 1u};
 }
 
-/* a mod n for a 32-bit a: with c = ceil(2^64 / n), (c a mod 2^64) / 2^64
+/* a mod n for a 32-bit a: the mask when n is a power of two (n = 1
+ * included, whose mask is 0); else, with c = ceil(2^64 / n), (c a mod 2^64) / 2^64
  * approximates the fractional part of a / n closely enough that its
  * product with n, floored, is the remainder, for every a and n below 2^32
  * (Lemire, Kaser and Kurz 2019, theorem 1: a multiplier of 64 bits
  * suffices for 32-bit operands). The product's high 64 bits come from
  * the two 32-bit halves of c a: (hi n 2^32 + lo n) / 2^64 floors to
- * (hi n + floor(lo n / 2^32)) / 2^32, whose sum cannot overflow. For
- * n = 1, c = 0 gives 0. */
+ * (hi n + floor(lo n / 2^32)) / 2^32, whose sum cannot overflow. */
 uint32_t mc_permutation_remainder(uint32_t a, mc_permutation_size s)
 {
+    if ((s.n & s.mask) == 0u)
+        return a & s.mask;
     uint64_t frac = s.inverse * a;
     uint64_t hi = frac >> 32, lo = frac & 0xffffffffu;
     return (uint32_t)((hi * s.n + ((lo * s.n) >> 32)) >> 32);
@@ -355,9 +358,8 @@ uint32_t mc_permutation_element_sized(uint32_t i, mc_permutation_size size, uint
         i ^= i >> 5;
     } while (i >= n);
     /* (i + key) mod n without the 32-bit overflow of i + key; key mod n
-     * is a mask when n is a power of two (w = n - 1 then), else two
-     * multiplications instead of a division. */
-    uint64_t r = (uint64_t)i + ((n & w) == 0u ? key & w : mc_permutation_remainder(key, size));
+     * without a division (a mask, or two multiplications). */
+    uint64_t r = (uint64_t)i + mc_permutation_remainder(key, size);
     return (uint32_t)(r >= n ? r - n : r);
 }
 

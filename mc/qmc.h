@@ -103,14 +103,15 @@ double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
 uint32_t mc_permutation_element(uint32_t i, uint32_t n, uint32_t key);
 
 /* The size n of mc_permutation_element made once for the many requests
- * of a pixel: the mask of the bits of n - 1, which the cycle walk needs,
- * and Lemire's multiplier for the remainder key mod n (ceil(2^64 / n);
+ * of a pixel: the mask of the bits of n - 1, which the cycle walk (and,
+ * for a power of two, the remainder) needs, and Lemire's multiplier for
+ * the remainder key mod n otherwise (ceil(2^64 / n);
  * Lemire, Kaser and Kurz, "Faster remainder by direct computation",
  * 2019), which replaces a division by two multiplications. */
 typedef struct mc_permutation_size {
     uint32_t n;       /* >= 1 */
     uint32_t mask;    /* 2^w - 1, w the bits of n - 1 */
-    uint64_t inverse; /* ceil(2^64 / n) mod 2^64 (0 for n = 1) */
+    uint64_t inverse; /* ceil(2^64 / n); 0 for a power of two, which the mask serves */
 } mc_permutation_size;
 
 mc_permutation_size mc_permutation_size_make(uint32_t n);

@@ -80,10 +80,19 @@ int rt_bdpt_walk(const rt_bdpt_ctx *c, rt_ray r, vec3 beta, rt_bdpt_vertex *v, i
 int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex *v, int max_n,
                        uint64_t *segments);
 
+/* The aim's targets seen from the emitting point p, into *at when
+ * c->aim > 0 (rt_lights_prepare over rt_scene_targets); without an aim
+ * *at is left alone, and the _at functions below do not read it. */
+static inline void rt_bdpt_emit_prepare(const rt_bdpt_ctx *c, vec3 p, rt_lights_at *at)
+{
+    if (c->aim > 0.0)
+        rt_lights_prepare(at, rt_scene_targets(c->scene), rt_scene_target_count(c->scene), p);
+}
+
 /* rt_bdpt_emit_direction and rt_bdpt_emit_pdf with the targets prepared
- * from the emitting point (rt_lights_prepare over rt_scene_targets; at is
- * read only when c->aim > 0): a light subpath prepares them once for its
- * direction, its throughput and the weights of its joins. */
+ * from the emitting point (rt_bdpt_emit_prepare): a light subpath
+ * prepares them for its direction and its throughput, and
+ * rt_bdpt_cache_pdfs for the weights of its joins. */
 vec3 rt_bdpt_emit_direction_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n,
                                rt_sampler *sampler);
 double rt_bdpt_emit_pdf_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n, vec3 d);

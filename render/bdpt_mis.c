@@ -38,8 +38,7 @@ double rt_bdpt_emit_pdf_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n,
 double rt_bdpt_emit_pdf(const rt_bdpt_ctx *c, vec3 p, vec3 n, vec3 d)
 {
     rt_lights_at at;
-    if (c->aim > 0.0)
-        rt_lights_prepare(&at, rt_scene_targets(c->scene), rt_scene_target_count(c->scene), p);
+    rt_bdpt_emit_prepare(c, p, &at);
     return rt_bdpt_emit_pdf_at(c, &at, n, d);
 }
 
@@ -220,9 +219,8 @@ void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int n
     /* Each segment gives the densities at both its ends: lf[i + 1] and
      * lr[i] between light vertices i and i + 1, cf[j + 1] and cr[j]
      * between camera vertices j and j + 1. */
-    if (nl > 0 && c->aim > 0.0)
-        rt_lights_prepare(&sp->emit_at, rt_scene_targets(c->scene), rt_scene_target_count(c->scene),
-                          light[0].p);
+    if (nl > 0)
+        rt_bdpt_emit_prepare(c, light[0].p, &sp->emit_at);
     for (int i = 0; i < nl; i++) {
         if (i == 0)
             sp->lf[0] = remap0(rt_bdpt_origin_pdf(c, &light[0]));

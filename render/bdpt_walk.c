@@ -127,8 +127,7 @@ int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex
     if (max_n == 1)
         return 1;
     rt_lights_at at;
-    if (c->aim > 0.0)
-        rt_lights_prepare(&at, rt_scene_targets(s), rt_scene_target_count(s), p);
+    rt_bdpt_emit_prepare(c, p, &at);
     vec3 dir = rt_bdpt_emit_direction_at(c, &at, n, sampler);
     double cos_e = vec3_dot(dir, n);
     if (!(cos_e > 0.0))
@@ -169,7 +168,6 @@ vec3 rt_bdpt_emit_direction_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec
 vec3 rt_bdpt_emit_direction(const rt_bdpt_ctx *c, vec3 p, vec3 n, rt_sampler *sampler)
 {
     rt_lights_at at;
-    if (c->aim > 0.0)
-        rt_lights_prepare(&at, rt_scene_targets(c->scene), rt_scene_target_count(c->scene), p);
+    rt_bdpt_emit_prepare(c, p, &at);
     return rt_bdpt_emit_direction_at(c, &at, n, sampler);
 }

@@ -553,7 +553,7 @@ static void test_qmc_permutation_element(void **state)
 
 /* mc_permutation_remainder is a % n: for 2 x 10^6 random pairs (a, n),
  * half of them with n < 2^16, and at the edges (n = 1, 2, 3, 2^k - 1,
- * 2^k + 1, 2^32 - 1 against a = 0, 1, n - 1, n, n + 1, 2n - 1, 2^32 - 2,
+ * 2^k, 2^k + 1, 2^32 - 1 against a = 0, 1, n - 1, n, n + 1, 2n - 1, 2^32 - 2,
  * 2^32 - 1). Exact comparisons: any difference fails. */
 static void test_qmc_permutation_remainder(void **state)
 {
@@ -567,8 +567,10 @@ static void test_qmc_permutation_remainder(void **state)
         n += n == 0u;
         bad += mc_permutation_remainder(a, mc_permutation_size_make(n)) != a % n;
     }
-    static const uint32_t edges_n[] = {1u, 2u, 3u, 5u, 7u, 50u, 100u, 255u, 257u, 65535u, 65537u,
-                                       0x7fffffffu, 0x80000001u, 0xfffffffeu, 0xffffffffu};
+    static const uint32_t edges_n[] = {1u,          2u,          3u,          5u,     7u,     50u,
+                                       64u,         100u,        255u,        257u,   65535u, 65537u,
+                                       0x7fffffffu, 0x80000000u, 0x80000001u, 0xfffffffeu,
+                                       0xffffffffu};
     for (size_t j = 0; j < sizeof edges_n / sizeof edges_n[0]; j++) {
         uint32_t n = edges_n[j];
         mc_permutation_size s = mc_permutation_size_make(n);
