@@ -113,7 +113,9 @@ MATH_JS = """(() => {
 
 def event_problems(b, session):
     """What the browser reported for one session's page: exceptions, console
-    errors, requests for anything but file: and data: URLs, failed loads."""
+    errors, requests for anything but file:, data: and blob: URLs (a blob:
+    URL holds what the page itself made: the lab's Worker script), failed
+    loads."""
     out = []
     for e in b.events:
         if e.get("sessionId") != session:
@@ -129,7 +131,7 @@ def event_problems(b, session):
                        " " + p["entry"].get("url", ""))
         elif m == "Network.requestWillBeSent":
             url = p["request"]["url"]
-            if not (url.startswith("file:") or url.startswith("data:")):
+            if not url.startswith(("file:", "data:", "blob:")):
                 out.append("requests " + url)
         elif m == "Network.loadingFailed":
             out.append("failed to load: " + p.get("errorText", ""))

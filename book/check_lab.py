@@ -3,7 +3,8 @@
 Debian's headless Chromium, as a reader would, through its own controls.
 
   - the page loads, the WebAssembly module starts, and nothing is logged as
-    an error, thrown, or requested from anywhere but file: and data: URLs;
+    an error, thrown, or requested from anywhere but file:, data: and blob:
+    URLs (blob: is the page's own Worker script);
   - every widget has run its default case on load, before any click: the
     chi-square row passes, the own-warp box's example passes, and their
     pictures are drawn;
@@ -19,7 +20,9 @@ Debian's headless Chromium, as a reader would, through its own controls.
     with its own, right, density is caught against the cosine target ("do
     not follow"); the cosine warp with a pdf that lacks 1/pi fails on its
     integral; a syntax error, a thrown exception (with its line), a NaN and
-    a wrong-shaped point each show the error panel and judge nothing;
+    a wrong-shaped point each show the error panel and judge nothing; a pdf
+    that never returns (inside the module's quadrature) is stopped at the
+    box's time limit with its Worker, and the next run passes;
   - at phone width (390 px) the page is no wider than the screen;
   - with JavaScript off the live parts stay hidden and the static runs and
     figures remain.
@@ -89,6 +92,10 @@ function pdf(w) {
 """
 OWN_NAN = "function sample(u1, u2) { return [0, 0, 1]; }\nfunction pdf(w) { return Math.sqrt(-1); }\n"
 OWN_SHAPE = "function sample(u1, u2) { return [u1, u2]; }\nfunction pdf(w) { return 1; }\n"
+# A pdf that answers the sample loop's 10,000 calls and then never returns:
+# it hangs inside the module's quadrature, which calls it through an import.
+OWN_HANGS = ("let calls = 0;\nfunction sample(u1, u2) { return [0, 0, 1]; }\n"
+             "function pdf(w) { if (++calls > 10000) for (;;) {} return w[2] / Math.PI; }\n")
 
 
 class Page:
@@ -157,15 +164,17 @@ class Page:
                    stat: document.getElementById('lab-stat').textContent,
                    status: document.getElementById('lab-status').textContent }; })()""")
 
-    def run_own(self, code, target, n, seed):
-        """The own-warp box: the code, target, count and seed; its verdict,
-        the lines of its checks and the error panel's text (None when
-        hidden)."""
+    def run_own(self, code, target, n, seed, limit_ms=30000):
+        """The own-warp box: the code, target, count, seed and time limit;
+        its verdict, the lines of its checks and the error panel's text
+        (None when hidden)."""
         self.press("""document.getElementById('own-code').value = %s;
           const t = document.getElementById('own-target'); t.value = %s;
           t.dispatchEvent(new Event('change'));
           document.getElementById('own-n').value = '%d';
-          document.getElementById('own-seed').value = '%d';""" % (json.dumps(code), json.dumps(target), n, seed),
+          document.getElementById('own-seed').value = '%d';
+          document.getElementById('own-limit').value = '%d';"""
+                   % (json.dumps(code), json.dumps(target), n, seed, limit_ms),
                    "lab-own", "own-run")
         return self.js("""(() => { const r = document.getElementById('lab-own');
           const panel = document.getElementById('own-error');
@@ -311,9 +320,18 @@ def main():
                    "own warp, %s: error panel %s" % (what, json.dumps(o["error"])))
             if code is OWN_THROWS:
                 page.screenshot_of("lab-own", os.path.join(shots, "lab-own-warp-error.png"))
+        # Code that never returns: stopped at the limit, the page live all
+        # along (press() polls it), and the next run starts a new Worker.
+        t0 = time.time()
+        o = page.run_own(OWN_HANGS, "cosine", 10000, 1, 5000)
+        waited = time.time() - t0
+        report(o["state"] == "error" and o["verdict"] == "error" and not o["checks"] and not o["pictures"]
+               and o["error"] is not None and "did not finish within 5 s" in o["error"] and 4.5 <= waited < 30,
+               "own warp, a pdf that never returns: stopped after %.1f s, error panel %s"
+               % (waited, json.dumps(o["error"])))
         o = page.run_own(OWN_MALLEY, "cosine", 10000, 2)
         report(o["verdict"] == "pass" and o["error"] is None,
-               "own warp after an error: the panel goes, %s" % o["verdict"])
+               "own warp after an error and a stopped run: the panel goes, %s" % o["verdict"])
         page.screenshot(os.path.join(shots, "lab-desktop.png"))
         probs = page.problems()
         report(not probs, "desktop: no console error, no request off the disk" +

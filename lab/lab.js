@@ -30,18 +30,16 @@
 
   /* --- the module ------------------------------------------------------- */
 
-  function decode(b64) {
-    const s = atob(b64), out = new Uint8Array(s.length);
-    for (let i = 0; i < s.length; i++) out[i] = s.charCodeAt(i);
-    return out;
-  }
-
-  /* The module is a WASI reactor that never reads or writes a file: every
-   * import it names (the C library's stdio) answers ENOSYS, but for those
-   * of "lab", the reader's pdf and invert (lab/own.c), which call whatever
-   * the own-warp box put in hooks. */
-  async function load() {
-    const module = await WebAssembly.compile(decode(window.MCBOX_LAB_WASM));
+  /* The module from its base64 text. The module is a WASI reactor that
+   * never reads or writes a file: every import it names (the C library's
+   * stdio) answers ENOSYS, but for those of "lab", the reader's pdf and
+   * invert (lab/own.c), which call whatever the own-warp box put in hooks.
+   * Self-contained, so that the own-warp box's Worker can take its source
+   * (loader, below) and load a module of its own. */
+  async function loadModule(b64) {
+    const raw = atob(b64), wasm = new Uint8Array(raw.length);
+    for (let i = 0; i < raw.length; i++) wasm[i] = raw.charCodeAt(i);
+    const module = await WebAssembly.compile(wasm);
     const imports = {}, hooks = { pdf: () => NaN, invert: () => {} };
     for (const imp of WebAssembly.Module.imports(module)) {
       (imports[imp.module] = imports[imp.module] || {})[imp.name] =
@@ -52,7 +50,7 @@
     e._initialize();
     const bytes = () => new Uint8Array(e.memory.buffer);
     return {
-      e, hooks,
+      e, hooks, loader: loadModule,
       str(p) {
         const b = bytes();
         let q = p;
@@ -511,7 +509,7 @@
     const widgets = [{ id: "lab-chi2", init: chi2Lab }, { id: "lab-estimator", init: estimatorLab }]
       .concat(window.MCBOX_LAB_WIDGETS || []).filter((w) => $(w.id));
     if (!widgets.length) return;
-    const lab = await load();
+    const lab = await loadModule(window.MCBOX_LAB_WASM);
     const catalog = JSON.parse(lab.str(lab.e.lab_catalog()));
     for (const w of document.querySelectorAll(".lab-live")) w.hidden = false;
     document.body.classList.add("lab-js");
