@@ -234,8 +234,11 @@
         ready = loadModule(m.wasm).then((l) => { lab = l; });
         return;
       }
-      ready.then(() => self.postMessage(run(m)),
-                 (err) => self.postMessage({ error: "the page itself failed: the module did not start: " + err }));
+      ready.then(() => {
+        let answer;
+        try { answer = run(m); } catch (err) { answer = { error: "the page itself failed: " + err }; }
+        self.postMessage(answer);
+      }, (err) => self.postMessage({ error: "the page itself failed: the module did not start: " + err }));
     };
   }
 
