@@ -6,10 +6,13 @@
 # "N passed, N failed"; a target passes when libFuzzer exits 0 (no crash,
 # leak, timeout or sanitizer report). Crash inputs are kept in $1.
 # The targets run side by side, as many at a time as there are processors
-# (FUZZ_JOBS to choose): each is one process on a core of its own, so a
-# target gets its whole time on one core either way, and three targets
-# take two turns of $2 seconds on two cores instead of three. The lines
-# come in the order the targets were given.
+# (FUZZ_JOBS to choose; FUZZ_JOBS=1 runs them one after another): three
+# targets take two turns of $2 seconds on two cores instead of three. Two
+# targets of one turn share the machine's memory and caches: on the
+# project's 2-core machine at 30 s, the sample reader ran 1.57 million
+# inputs beside the protocol parser against 2.89 million alone, the parser
+# 3.29 million against 3.88 million. The lines come in the order the
+# targets were given.
 set -u
 dir=$1 secs=$2
 shift 2
