@@ -82,12 +82,16 @@ book-deps: deps
 # second make so that `-j` cannot start compiling before the install ends.
 # Those whose work after the build is a test or a table build with a job per
 # processor unless the caller gave -j (a clean `make test` on two cores: the
-# build 164 s instead of 240 s); those that time or plot build as asked.
-PUBLIC := test run bench soak plots plots-check book
-PUBLIC_PARALLEL := test run soak
+# build 164 s instead of 240 s; make exercises does the same); those that
+# time or plot build as asked.
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+JOBS_UNLESS_GIVEN = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(JOBS))
+PUBLIC := bench plots plots-check book
+PUBLIC_PARALLEL := test run soak
 $(PUBLIC): deps
-	@$(MAKE) --no-print-directory $(if $(and $(filter $@,$(PUBLIC_PARALLEL)),$(if $(filter -j%,$(MAKEFLAGS)),,x)),-j$(JOBS)) _$@
+	@$(MAKE) --no-print-directory _$@
+$(PUBLIC_PARALLEL): deps
+	@$(MAKE) --no-print-directory $(JOBS_UNLESS_GIVEN) _$@
 book-check: book-deps
 	@$(MAKE) --no-print-directory _book-check
 

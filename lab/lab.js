@@ -30,16 +30,21 @@
 
   /* --- the module ------------------------------------------------------- */
 
-  /* The module from its base64 text. The module is a WASI reactor that
+  /* An instance of the module, from its base64 text or from the module
+   * compiled already (`module` below: the own-warp box's Worker gets it by
+   * postMessage and compiles nothing). The module is a WASI reactor that
    * never reads or writes a file: every import it names (the C library's
    * stdio) answers ENOSYS, but for those of "lab", the reader's pdf and
    * invert (lab/own.c), which call whatever the own-warp box put in hooks.
-   * Self-contained, so that the own-warp box's Worker can take its source
-   * (loader, below) and load a module of its own. */
-  async function loadModule(b64) {
-    const raw = atob(b64), wasm = new Uint8Array(raw.length);
-    for (let i = 0; i < raw.length; i++) wasm[i] = raw.charCodeAt(i);
-    const module = await WebAssembly.compile(wasm);
+   * Self-contained, so that the Worker can take its source (loader, below)
+   * and make an instance of its own. */
+  async function loadModule(source) {
+    let module = source;
+    if (typeof source === "string") {
+      const raw = atob(source), wasm = new Uint8Array(raw.length);
+      for (let i = 0; i < raw.length; i++) wasm[i] = raw.charCodeAt(i);
+      module = await WebAssembly.compile(wasm);
+    }
     const imports = {}, hooks = { pdf: () => NaN, invert: () => {} };
     for (const imp of WebAssembly.Module.imports(module)) {
       (imports[imp.module] = imports[imp.module] || {})[imp.name] =
@@ -50,7 +55,7 @@
     e._initialize();
     const bytes = () => new Uint8Array(e.memory.buffer);
     return {
-      e, hooks, loader: loadModule,
+      e, hooks, module, loader: loadModule,
       str(p) {
         const b = bytes();
         let q = p;

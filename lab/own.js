@@ -229,9 +229,9 @@
 
     self.onmessage = (ev) => {
       const m = ev.data;
-      if (m.wasm) {
+      if (m.module) {
         SHAPE = m.shape;
-        ready = loadModule(m.wasm).then((l) => { lab = l; });
+        ready = loadModule(m.module).then((l) => { lab = l; });
         return;
       }
       ready.then(() => {
@@ -296,13 +296,12 @@
                   ")(loadModule);\n";
       const url = URL.createObjectURL(new Blob([src], { type: "text/javascript" }));
       const w = new Worker(url);
-      w.url = url;
-      w.postMessage({ wasm: window.MCBOX_LAB_WASM, shape: SHAPE });
+      URL.revokeObjectURL(url); // the Worker holds the script from here on
+      w.postMessage({ module: lab.module, shape: SHAPE });
       return w;
     }
     function stopJudge(w) {
       w.terminate();
-      URL.revokeObjectURL(w.url);
       if (worker === w) worker = null;
     }
 

@@ -42,8 +42,6 @@ ex_alts = $(shell sed -n 's/^\#\(el\)*if ALT == \([0-9][0-9]*\).*/\2/p' \
 ex_builds = $(1) $(1)-ref $(foreach k,$(call ex_slips,$(1)),$(1)-slip$(k)) \
             $(foreach k,$(call ex_alts,$(1)),$(1)-alt$(k))
 EX_ALL := $(patsubst %,$(EX_DIR)/%-all,$(EXERCISES))
-# Jobs of the build when the caller gave no -j: the machine's cores.
-EX_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # The exercises' objects are plain code: no LTO, whatever the variant.
 EX_CFLAGS = $(ALL_CFLAGS) -fno-lto
 
@@ -83,7 +81,7 @@ _exercises-build: $(EX_ALL)
 
 exercises:
 	@start=$$(date +%s.%N); \
-	$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(EX_JOBS)) _exercises-build && \
+	$(MAKE) --no-print-directory $(JOBS_UNLESS_GIVEN) _exercises-build && \
 	EX_START=$$start sh exercises/run.sh $(EX_DIR) $(foreach e,$(EXERCISES),$(call ex_builds,$(e)))
 
 exercise:
