@@ -23,11 +23,12 @@
  * (BOOK_ERR_SECONDS x BOOK_MSE) / (seconds x MSE): the book's program
  * averages independent samples (drand48 for every one), so its time to
  * reach an error scales exactly as 1 / MSE, and this is how many times
- * longer than the row it would take to reach the row's error. The book's program does not render lambert, so
- * there the table gives the efficiency 1 / (MSE x seconds) and its ratio
- * to the mixture's. Last, the share of the squared error that sits in the
- * worst 1% of the pixels. Under the book scene's table one more line: the
- * same ratio at the book's own error (equal_error_measured).
+ * longer than the row it would take to reach the row's error. The book's
+ * program does not render lambert, so there the table gives the
+ * efficiency 1 / (MSE x seconds) and its ratio to the mixture's. Last,
+ * the share of the squared error that sits in the worst 1% of the pixels.
+ * Under the book scene's table one more line: the same ratio at the book's
+ * own error (equal_error_measured).
  *
  * The book's program is not part of mcbox: its figures are constants
  * measured once on another machine, unless --book-program PATH (or
@@ -237,13 +238,14 @@ static bool error_rows_measure(const rt_scene *scene, rt_camera_params cp, uint6
  * the row's error, far below the book's; mcbox's error cannot be carried
  * up to the book's by the same 1 / N, since a render of a few samples per
  * pixel does worse than that law: a Sobol set of one or two points per
- * pixel has none of the stratification across a pixel's samples that
- * fifty have, and part of a render's time does not grow with the sample
- * count (the first pass's edge test is in it). So the row `row` (the default, bdpt+rr) is
- * rendered at 1, 2, 3, ... samples per pixel until its MSE is at most the
- * book's, and that render is timed (median of NROUNDS): the book's seconds
- * over those is how many times faster it gives an image as good as the
- * book's. At most MEASURED_MAX_SPP samples. False when a render fails. */
+ * pixel has little or none of the stratification across a pixel's samples
+ * that fifty have, and part of a render's time does not grow with the
+ * sample count (the first pass's edge test is in it). So the row `row`
+ * (the default, bdpt+rr) is rendered at 1, 2, 3, ... samples per pixel
+ * until its MSE is at most the book's, and that render is timed (median of
+ * NROUNDS): the book's seconds over those is how many times faster it
+ * gives an image as good as the book's. At most MEASURED_MAX_SPP samples.
+ * False when a render fails. */
 #define MEASURED_MAX_SPP 64
 static bool equal_error_measured(const char *row, const rt_scene *scene, rt_camera_params cp,
                                  uint64_t seed, int threads, const rt_image *ref, double noise,
@@ -266,8 +268,8 @@ static bool equal_error_measured(const char *row, const rt_scene *scene, rt_came
             t[round] = st.seconds;
             double er = rt_image_mse(img, ref) - noise;
             if (round > 0 && er != e) {
-                fprintf(stderr, "%s: %s at %llu spp: the same render gave another image\n", prog, row,
-                        (unsigned long long)n);
+                fprintf(stderr, "%s: %s at %llu spp: the same render gave another image\n", prog,
+                        row, (unsigned long long)n);
                 return false;
             }
             e = er;
