@@ -174,11 +174,15 @@ static double worst_share(const rt_image *img, const rt_image *ref)
 #define NROWS (sizeof error_rows / sizeof error_rows[0])
 
 /* The render job of the row named `row` (error_rows' syntax) at width x
- * width; false for a strategy the renderer does not know. */
+ * width, spp samples per pixel; false for a strategy the renderer does not
+ * know. */
 static bool row_job(const char *row, const rt_scene *scene, rt_camera_params cp, int width,
-                    rt_render_job *job)
+                    uint64_t spp, uint64_t seed, int threads, rt_render_job *job)
 {
     *job = rt_render_job_default(scene, rt_camera_make(cp, width, width));
+    job->spp = spp;
+    job->seed = seed;
+    job->threads = threads;
     char name[32];
     snprintf(name, sizeof name, "%s", row);
     job->path.russian_roulette = strstr(name, "+rr") != NULL;
@@ -187,6 +191,33 @@ static bool row_job(const char *row, const rt_scene *scene, rt_camera_params cp,
                                                  : RT_SAMPLER_DEFAULT;
     name[strcspn(name, "+")] = '\0';
     return rt_bdpt_strategy_parse(name, &job->path);
+}
+
+/* Renders job into img: *seconds its time, *mse its MSE against ref less
+ * the reference's noise. False (after a line on stderr) when it fails. */
+static bool render_error(const rt_render_job *job, const rt_image *ref, double noise, rt_image *img,
+                         double *seconds, double *mse)
+{
+    rt_render_stats st;
+    if (rt_render(job, img, &st) != 0) {
+        fprintf(stderr, "%s: render failed\n", prog);
+        return false;
+    }
+    *seconds = st.seconds;
+    *mse = rt_image_mse(img, ref) - noise;
+    return true;
+}
+
+/* A fixed seed gives the same image at any thread count, so a render
+ * repeated gives the same MSE: false (after a line on stderr) when it did
+ * not. */
+static bool same_image(const char *what, double first, double again)
+{
+    if (again == first)
+        return true;
+    fprintf(stderr, "%s: %s: the same render gave another image (MSE %.17g, then %.17g)\n", prog,
+            what, first, again);
+    return false;
 }
 
 /* Renders every row of error_rows NROUNDS times into img and fills, per
@@ -204,27 +235,19 @@ static bool error_rows_measure(const rt_scene *scene, rt_camera_params cp, uint6
     for (int round = 0; round < NROUNDS; round++) {
         for (size_t i = 0; i < NROWS; i++) {
             rt_render_job job;
-            used_spp[i] = 0;
-            if (!row_job(error_rows[i].name, scene, cp, img->width, &job))
-                continue;
             uint64_t n = (uint64_t)((double)spp * error_rows[i].spp_share);
-            job.spp = n > 0 ? n : 1;
-            job.seed = seed;
-            job.threads = threads;
-            rt_render_stats st;
-            if (rt_render(&job, img, &st) != 0) {
-                fprintf(stderr, "%s: render failed\n", prog);
+            used_spp[i] = 0;
+            if (!row_job(error_rows[i].name, scene, cp, img->width, n > 0 ? n : 1, seed, threads,
+                         &job))
+                continue;
+            double e;
+            if (!render_error(&job, ref, noise, img, &times[i][round], &e))
                 return false;
-            }
             used_spp[i] = job.spp;
-            times[i][round] = st.seconds;
-            double e = rt_image_mse(img, ref) - noise;
             if (round == 0) {
                 mse[i] = e;
                 worst[i] = worst_share(img, ref);
-            } else if (e != mse[i]) {
-                fprintf(stderr, "%s: %s: the same render gave another image (MSE %.17g, then %.17g)\n",
-                        prog, error_rows[i].name, mse[i], e);
+            } else if (!same_image(error_rows[i].name, mse[i], e)) {
                 return false;
             }
         }
@@ -253,25 +276,14 @@ static bool equal_error_measured(const char *row, const rt_scene *scene, rt_came
 {
     for (uint64_t n = 1; n <= MEASURED_MAX_SPP; n++) {
         double t[NROUNDS], e = 0.0;
+        rt_render_job job;
+        if (!row_job(row, scene, cp, img->width, n, seed, threads, &job))
+            return false;
         for (int round = 0; round < NROUNDS; round++) {
-            rt_render_job job;
-            rt_render_stats st;
-            if (!row_job(row, scene, cp, img->width, &job))
+            double er;
+            if (!render_error(&job, ref, noise, img, &t[round], &er) ||
+                (round > 0 && !same_image(row, e, er)))
                 return false;
-            job.spp = n;
-            job.seed = seed;
-            job.threads = threads;
-            if (rt_render(&job, img, &st) != 0) {
-                fprintf(stderr, "%s: render failed\n", prog);
-                return false;
-            }
-            t[round] = st.seconds;
-            double er = rt_image_mse(img, ref) - noise;
-            if (round > 0 && er != e) {
-                fprintf(stderr, "%s: %s at %llu spp: the same render gave another image\n", prog,
-                        row, (unsigned long long)n);
-                return false;
-            }
             e = er;
             if (e > BOOK_MSE)
                 break; /* not yet the book's error: no need of the other rounds */
