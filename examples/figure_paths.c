@@ -5,7 +5,7 @@
  *            built as the renderer builds one: the camera ray of a pixel
  *            (rt_camera_ray, rt_scene_hit), a cosine-weighted bounce
  *            (pdf_cosine_direction) and a point drawn on the lamp
- *            (smp_parallelogram_sample); then the power heuristic's
+ *            (smp_parallelogram_sample); then the balance heuristic's
  *            weight of each of its four strategies (rt_bdpt_mis_weight).
  *            CSV curve,x,y,z: the edges of the room's quads ("room",
  *            "lamp"; a row "break" ends a polyline), the vertices x0 (on

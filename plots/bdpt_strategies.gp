@@ -28,7 +28,7 @@ set view equal xyz
 set xrange [-20:575]; set yrange [-310:575]; set zrange [-20:575]
 unset border; unset xtics; unset ytics; unset ztics
 names = '"the camera path reaches the lamp" "next-event estimation: lamp point joined" "one step from each end, joined" "light path joined to the camera"'
-set multiplot layout 2, 2 margins 0.02, 0.98, 0.0, 0.86 spacing 0.02, 0.09 title "{/:Bold Four strategies, one path: camera (x_3), floor (x_2), wall (x_1), lamp (x_0)}\nblue: the camera subpath; orange: the light subpath; dashed: the shadow ray that joins them.\nThe weights are rt\\_bdpt\\_mis\\_weight's power heuristic; they sum to 1" font ',12'
+set multiplot layout 2, 2 margins 0.02, 0.98, 0.0, 0.86 spacing 0.02, 0.09 title "{/:Bold Four strategies, one path: camera (x_3), floor (x_2), wall (x_1), lamp (x_0)}\nblue: the camera subpath; orange: the light subpath; dashed: the shadow ray that joins them.\nThe weights are rt\\_bdpt\\_mis\\_weight's balance heuristic; they sum to 1" font ',12'
 do for [s = 0:3] {
     unset arrow; unset label
     do for [i = 0:2] {

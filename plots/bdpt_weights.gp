@@ -1,4 +1,4 @@
-# plots/bdpt_weights.gp - the power heuristic's weights of the four
+# plots/bdpt_weights.gp - the balance heuristic's weights of the four
 # strategies of one family of three-segment paths. Data: bdpt_weights.csv
 # (plots/data_bdpt_weights.sh, examples/figure_paths.c weights): the path
 # camera, floor point x2, wall point x1, lamp point x0 of figure_paths,
@@ -9,7 +9,7 @@ W = 1200; H = 500
 load 'plots/style.gp'
 f = datadir.'/bdpt_weights.csv'
 set datafile columnheaders
-set multiplot layout 1, 2 title "{/:Bold The power heuristic's weights along a family of paths}\nx_1 slides up the green wall; the camera, x_2 on the floor and x_0 on the lamp stay put (rt\\_bdpt\\_mis\\_weight)" font ',12'
+set multiplot layout 1, 2 title "{/:Bold The balance heuristic's weights along a family of paths}\nx_1 slides up the green wall; the camera, x_2 on the floor and x_0 on the lamp stay put (rt\\_bdpt\\_mis\\_weight)" font ',12'
 set format x '%g'; set format y '%g'
 set xrange [0:555]
 set xlabel 'height of x_1 on the wall'

@@ -7,7 +7,7 @@
 # NaN or infinity anywhere; and the fitted slopes say what the theory says:
 # plain pi within 0.05 of -1/2, stratified pi steeper than -0.7, and the
 # chi-square p-values of the correct sampler uniform (Kolmogorov-Smirnov),
-# those of the wrong one all below 1e-3; the power heuristic's weights of
+# those of the wrong one all below 1e-3; the balance heuristic's weights of
 # the path figures sum to 1; and no figure or data file is older than the
 # script, style, data or program that makes it (with a negative control
 # that must be caught). Exit status 1 on any failure.
@@ -145,7 +145,7 @@ if [ -f "$data/chi2_pvalues.csv" ]; then
     fi
 fi
 
-# The power heuristic's weights of a path sum to 1 over its strategies
+# The balance heuristic's weights of a path sum to 1 over its strategies
 # (render/bdpt.h): on every path of the family and on the drawn one.
 if [ -f "$data/bdpt_weights.csv" ]; then
     bad=$(awk -F, 'NR > 1 && ($6 < 1 - 1e-9 || $6 > 1 + 1e-9)' "$data/bdpt_weights.csv" | wc -l)

@@ -22,10 +22,12 @@
  *     (s = 0: the camera subpath's own hit on an emitter; t = 1: the light
  *     subpath joined to the camera and splatted onto the pixel it is seen
  *     in, "light tracing");
- *   - each (s, t) weighted by the power heuristic over the strategies that
- *     could have built the same path, w_s = p_s^2 / sum_r p_r^2, with p_r
+ *   - each (s, t) weighted by the balance heuristic over the strategies
+ *     that could have built the same path, w_s = p_s / sum_r p_r, with p_r
  *     the density (area measure, every vertex) with which strategy r
- *     samples it. Specular vertices (glass, metal) cannot be joined: a
+ *     samples it (Veach's power heuristic, the squares of the densities,
+ *     left 6% more variance on the book scene and 8% on lambert:
+ *     docs/performance.md). Specular vertices (glass, metal) cannot be joined: a
  *     strategy that would join at one is left out of the sum, and the
  *     densities through it count as 1 in both directions (the deltas
  *     cancel). Two exceptions to the heuristic (see weight_from in
@@ -141,10 +143,11 @@ typedef struct rt_bdpt_ctx {
     /* The emission aim in force: for RT_BDPT in a scene with targets
      * (rt_scene_targets) ps->emit_aim, else 0 (cosine emission alone). */
     double aim;
-    /* False in a render: shadow rays are traced four at a time
-     * (rt_scene_hit4). True traces each alone when it is made, the
-     * reference that gives the same image bit for bit
-     * (rt_render_job.one_path_at_a_time sets it). */
+    /* False in a render: shadow rays, and the first segments of the
+     * caustic's through rays, are traced four at a time (rt_scene_hit4).
+     * True traces each alone when it is made, the reference that gives
+     * the same image bit for bit (rt_render_job.one_path_at_a_time sets
+     * it). */
     bool one_ray_at_a_time;
     /* NULL in a render. The tests point it at a record that every join
      * fills: the joins' weights from running sums against the same
@@ -170,24 +173,32 @@ static inline bool rt_bdpt_weighted(const rt_path_settings *ps)
 
 /* How much the splat's density counts in the weights of a path of three
  * vertices (camera, one surface, emitter: direct light): the splat
- * strategy (2, 1) enters the power heuristic as (scale x p)^2. The camera
+ * strategy (2, 1) enters the balance heuristic as scale x p. The camera
  * strategies give every pixel exactly its spp samples, while a light
  * subpath lands in a pixel a random number of times, and that count's own
  * variance is not in the densities; any positive constant per strategy
- * keeps the weights a partition of unity (Veach 9.2). An eighth gave the
- * least squared error of 1, 1/2, 1/4, 1/8 and 1/16 on the lambert and
- * book scenes in `make bench`'s error tables, which measure it afresh on
- * every run; a scale on the splats of every path length did worse there
- * than on the direct light's alone, so the splats of longer paths keep
- * their plain weight. */
-#define RT_BDPT_DIRECT_SPLAT_SCALE 0.125
+ * keeps the weights a partition of unity (Veach 9.2). The variance of
+ * paired renders fell as the scale went down through 1/8, 1/25, 1/64 and
+ * 1/256, and hardly moved from 1/256 to 0, on both the book and lambert
+ * scenes (docs/performance.md); a positive scale keeps the splat for the
+ * direct light no other strategy can make. */
+#define RT_BDPT_DIRECT_SPLAT_SCALE (1.0 / 256.0)
+
+/* The same for the splat (n - 1, 1) of a path of n >= 4 vertices, for the
+ * same reason, milder: its density is c x p in the balance heuristic. At
+ * 600 x 600 and 50 spp, two seeds each, a half gave 2.3% less error than
+ * 1 on the book scene and 3.5% less on lambert, 0.7 about the same, and
+ * paired renders at 300 x 300 more error at 1/4 and at 2
+ * (docs/performance.md). */
+#define RT_BDPT_SPLAT_SCALE 0.5
 
 /* The weight of strategy s (s light vertices, n - s camera vertices) for
  * the joined path x[0..n) (x[0] on an emitter or wherever the camera
- * subpath ended, x[n-1] the camera), 2 <= n, 0 <= s < n: the power
- * heuristic, (c_s p_s)^2 / sum_r (c_r p_r)^2 over the strategies r that
+ * subpath ended, x[n-1] the camera), 2 <= n, 0 <= s < n: the balance
+ * heuristic, c_s p_s / sum_r c_r p_r over the strategies r that
  * can join there, with c_r = RT_BDPT_DIRECT_SPLAT_SCALE for the splat
- * (r = 2) of a path of n = 3 vertices and 1 otherwise.
+ * (r = 2) of a path of n = 3 vertices, RT_BDPT_SPLAT_SCALE for the splat
+ * (r = n - 1) of a longer one, and 1 otherwise.
  * neg.mis_double (the negative-control hook of rt_path_settings) counts
  * strategy mis_double - 1 twice in the sum. */
 double rt_bdpt_mis_weight(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x, int n, int s);

@@ -10,7 +10,7 @@
  *                which runs the strategies over the two subpaths;
  *   bdpt_walk.c  the subpaths: the walk shared by both ends and the start
  *                of a light subpath on an emitter (Veach 10.2);
- *   bdpt_mis.c   the densities of a joined path and the power heuristic's
+ *   bdpt_mis.c   the densities of a joined path and the balance heuristic's
  *                weights over the strategies (Veach 10.3 and 9.2);
  *   bdpt_join.c  the joins: a shadow ray between the two subpaths' ends
  *                (t >= 2) and the splat of a light subpath's end onto the
@@ -110,14 +110,14 @@ double rt_bdpt_origin_pdf(const rt_bdpt_ctx *c, const rt_bdpt_vertex *x);
  * pl of camera vertex j (pl from vertex j + 1); jl, jc whether the vertex
  * can be joined. pl and pc as in rt_bdpt_mis_weight.
  *
- * And the running sums of the power heuristic's denominator, one per
+ * And the running sums of the balance heuristic's denominator, one per
  * vertex, that make a join's weight O(1) (the recursive form of the
  * weights that vertex connection and merging renderers use
  * [@georgiev2012]): la[i] is
  * the sum over the strategies r <= i that make light vertices 0..r-1 from
- * the light (ok ones only) of prod_{k=r..i} (lr[k] / lf[k])^2; ce[j] the
+ * the light (ok ones only) of prod_{k=r..i} lr[k] / lf[k]; ce[j] the
  * sum over the strategies with t' = 1..j camera vertices of
- * prod_{m=t'..j} (cr[m] / cf[m])^2; ce_any[j] whether any of those can
+ * prod_{m=t'..j} cr[m] / cf[m]; ce_any[j] whether any of those can
  * join. */
 typedef struct rt_bdpt_subpath_pdfs {
     double lf[RT_BDPT_MAX_DEPTH], lr[RT_BDPT_MAX_DEPTH];

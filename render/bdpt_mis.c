@@ -1,5 +1,5 @@
 /* render/bdpt_mis.c - the densities with which each strategy makes a
- * joined path, and the power heuristic's weights over the strategies
+ * joined path, and the balance heuristic's weights over the strategies
  * (Veach's thesis, 1997, 10.3 and 9.2 [@veach1997]; this book's #ch-caustic). */
 #include <math.h>
 
@@ -110,12 +110,19 @@ static double to_area(double pdf_dir, vec3 from, const rt_bdpt_vertex *to)
  * directions cancel in every ratio (Veach 10.3.5). */
 static double remap0(double p) { return p != 0.0 ? p : 1.0; }
 
-/* The power heuristic's weight of strategy s from the densities of the
+/* c_r of the splat of a path of n vertices, the strategy r = n - 1
+ * (bdpt.h); every other strategy has c_r = 1. */
+static double splat_scale(int n)
+{
+    return n == 3 ? RT_BDPT_DIRECT_SPLAT_SCALE : RT_BDPT_SPLAT_SCALE;
+}
+
+/* The balance heuristic's weight of strategy s from the densities of the
  * joined path of n vertices: pl[i], pc[i] as in rt_bdpt_mis_weight
  * (remapped), ok[r] whether strategy r can join. Strategy r + 1 differs
  * from r in making x[r] from the light side, so p_{r+1} / p_r =
- * pl[r] / pc[r]; the weight is c_s^2 / sum_r c_r^2 (p_r / p_s)^2, in O(n),
- * with c_r the splat's scale on a path of three vertices (bdpt.h). */
+ * pl[r] / pc[r]; the weight is c_s / sum_r c_r (p_r / p_s), in O(n),
+ * with c_r the splat's scale (splat_scale). */
 /* BEGIN SNIPPET bdpt_weight */
 static double weight_from(const double *pl, const double *pc, bool *ok, int n, int s, int twice,
                           bool x1_specular)
@@ -123,7 +130,7 @@ static double weight_from(const double *pl, const double *pc, bool *ok, int n, i
     /* Light reached through a specular vertex right after the camera
      * subpath's last diffuse bounce (the caustic under the glass sphere):
      * with the deltas counted as 1 the densities of s = 0 and of the joins
-     * are not comparable, and the power heuristic would give the rare
+     * are not comparable, and the heuristic would give the rare
      * camera path that finds the lamp through the glass a sizeable weight,
      * i.e. fireflies. Any weights that are functions of the path and sum
      * to 1 over the strategies that can make it keep the sum unbiased
@@ -144,21 +151,19 @@ static double weight_from(const double *pl, const double *pc, bool *ok, int n, i
         ok[1] = false;
     if (!ok[s])
         return 0.0;
-    /* c_r^2 of the splat, the last strategy, r = n - 1; the strategies
-     * below it have c_r = 1. */
-    double splat = n == 3 ? RT_BDPT_DIRECT_SPLAT_SCALE * RT_BDPT_DIRECT_SPLAT_SCALE : 1.0;
+    double splat = splat_scale(n);
     double own = s == n - 1 ? splat : 1.0;
     double sum = own * (s == twice ? 2.0 : 1.0), ratio = 1.0;
     for (int r = s + 1; r < n; r++) {
         ratio *= pl[r - 1] / pc[r - 1];
         if (ok[r])
-            sum += ratio * ratio * (r == twice ? 2.0 : 1.0) * (r == n - 1 ? splat : 1.0);
+            sum += ratio * (r == twice ? 2.0 : 1.0) * (r == n - 1 ? splat : 1.0);
     }
     ratio = 1.0;
     for (int r = s - 1; r >= 0; r--) {
         ratio *= pc[r] / pl[r];
         if (ok[r])
-            sum += ratio * ratio * (r == twice ? 2.0 : 1.0);
+            sum += ratio * (r == twice ? 2.0 : 1.0);
     }
     return own / sum;
 }
@@ -257,7 +262,7 @@ void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int n
     for (int i = 0; i < nl; i++) {
         double q = sp->lr[i] / sp->lf[i];
         bool ok = i == 0 ? !second_delta : sp->jl[i - 1] && sp->jl[i];
-        sp->la[i] = q * q * ((ok ? 1.0 : 0.0) + (i > 0 ? sp->la[i - 1] : 0.0));
+        sp->la[i] = q * ((ok ? 1.0 : 0.0) + (i > 0 ? sp->la[i - 1] : 0.0));
     }
     /* On the camera side the strategy with t' camera vertices joins camera
      * vertices t' and t' - 1. */
@@ -266,7 +271,9 @@ void rt_bdpt_cache_pdfs(const rt_bdpt_ctx *c, const rt_bdpt_vertex *light, int n
     for (int j = 1; j < nc; j++) {
         double q = sp->cr[j] / sp->cf[j];
         bool ok = sp->jc[j] && sp->jc[j - 1];
-        sp->ce[j] = q * q * ((ok ? 1.0 : 0.0) + sp->ce[j - 1]);
+        /* t' = 1 is the splat, of a path of four vertices or more in
+         * every join that reads ce. */
+        sp->ce[j] = q * ((ok ? (j == 1 ? splat_scale(4) : 1.0) : 0.0) + sp->ce[j - 1]);
         sp->ce_any[j] = ok || sp->ce_any[j - 1];
     }
 }
@@ -311,21 +318,20 @@ double rt_bdpt_join_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
 }
 
 /* The ratios beside the join are the only ones the join changes: the
- * light side's sum is (pc[s-1] / pl[s-1])^2 times (strategy s - 1's term
- * plus la[s-2]), the camera side's (pl[s] / pc[s])^2 times (strategy
+ * light side's sum is pc[s-1] / pl[s-1] times (strategy s - 1's term
+ * plus la[s-2]), the camera side's pl[s] / pc[s] times (strategy
  * s + 1's term plus ce[t-2]); weight_from's loops, unrolled into the
  * running sums. With s = 0 the first two camera-side densities are the
- * lamp's (its area density, then its emission density), not cached ones. On a
- * path of three vertices the splat's term (t' = 1) carries c^2 = splat
- * (weight_from's scale); on longer ones c = 1, and no running sum holds a
- * scaled term. */
+ * lamp's (its area density, then its emission density), not cached ones. The
+ * splat's term (t' = 1) carries c = splat_scale(n): in ce[1] for the paths
+ * of four vertices or more that read it, here for the rest. */
 /* BEGIN SNIPPET bdpt_weight_running */
 static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *sp,
                              const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t,
                              const rt_bdpt_segment *g)
 {
     const rt_bdpt_vertex *z = &cam[t - 1];
-    double splat = s + t == 3 ? RT_BDPT_DIRECT_SPLAT_SCALE * RT_BDPT_DIRECT_SPLAT_SCALE : 1.0;
+    double splat = splat_scale(s + t);
     if (s == 0) {
         double origin = rt_bdpt_origin_pdf(c, z);
         if (!(origin > 0.0))
@@ -333,8 +339,9 @@ static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *s
         double q1 = origin / sp->cf[t - 1];
         double q2 = area_pdf(c, z, AS_ORIGIN, &cam[t - 2]) / sp->cf[t - 2];
         bool ok1 = sp->jc[t - 2], ok2 = sp->jc[t - 2] && sp->jc[t - 3];
-        double inner = q2 * q2 * ((ok2 ? splat : 0.0) + sp->ce[t - 3]);
-        double sum = q1 * q1 * ((ok1 ? 1.0 : 0.0) + inner);
+        /* Strategy 2 is the splat when t = 3. */
+        double inner = q2 * ((ok2 ? (t == 3 ? splat : 1.0) : 0.0) + sp->ce[t - 3]);
+        double sum = q1 * ((ok1 ? 1.0 : 0.0) + inner);
         /* weight_from's rule for light reached through a specular x[1]. */
         if (cam[t - 2].delta && (ok1 || ok2 || sp->ce_any[t - 3]))
             return 0.0;
@@ -346,7 +353,7 @@ static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *s
     /* g runs from y to z: z sees y along -g.dir. */
     double ql = area_pdf_along(c, z, AS_CAMERA, y, vec3_neg(g->dir), g) / sp->lf[s - 1];
     bool ok_l = s == 1 || (sp->jl[s - 2] && sp->jl[s - 1]);
-    double sum = ql * ql * ((ok_l ? 1.0 : 0.0) + (s >= 2 ? sp->la[s - 2] : 0.0));
+    double sum = ql * ((ok_l ? 1.0 : 0.0) + (s >= 2 ? sp->la[s - 2] : 0.0));
     if (t >= 2) {
         /* From the lamp (s = 1) the emission density, its targets
          * prepared once per light subpath. */
@@ -354,7 +361,7 @@ static double running_weight(const rt_bdpt_ctx *c, const rt_bdpt_subpath_pdfs *s
                                 : dir_pdf_along(c, y, AS_LIGHT, g->dir);
         double qc = area_along(pdf_dir, z, g) / sp->cf[t - 1];
         bool ok_c = sp->jc[t - 1] && sp->jc[t - 2];
-        sum += qc * qc * ((ok_c ? (t == 2 ? splat : 1.0) : 0.0) + sp->ce[t - 2]);
+        sum += qc * ((ok_c ? (t == 2 ? splat : 1.0) : 0.0) + sp->ce[t - 2]);
     }
     double own = t == 1 ? splat : 1.0;
     return own / (own + sum);

@@ -94,24 +94,53 @@ static vec3 through_chain_vertex(const rt_bdpt_ctx *c, rt_ray r, const rt_hit *h
     return vec3_mul(m->albedo, more);
 }
 
+/* seen_any's value once its ray r has been traced: h its first hit, NULL
+ * for none. */
+static vec3 seen_at(const rt_bdpt_ctx *c, rt_ray r, const rt_hit *h, int left, int splits,
+                    bool through_only, mc_rng *rng, uint64_t *segments)
+{
+    vec3 zero = vec3_make(0.0, 0.0, 0.0);
+    if (!h)
+        return zero;
+    const rt_material *m = rt_scene_material(c->scene, h->material);
+    vec3 e = through_only ? zero : rt_material_emitted(m, h);
+    if (!chain_material(m))
+        return e;
+    return vec3_add(e, through_chain_vertex(c, r, h, m, left, splits, rng, segments));
+}
+
+/* The first hits of the n rays r (hit[k] whether r[k] hit, h[k] its
+ * record), four at a time through rt_scene_hit4 (the same hits as
+ * rt_scene_hit) and the rest one by one; c->one_ray_at_a_time traces each
+ * alone. The rays of seen_at draw nothing before their first hit, so
+ * tracing those together and then running each ray's chain in order
+ * draws the stream as tracing each ray whole before the next does. */
+static void first_hits(const rt_bdpt_ctx *c, const rt_ray *r, int n, rt_hit *h, bool *hit,
+                       uint64_t *segments)
+{
+    int k = 0;
+    for (; !c->one_ray_at_a_time && k + RT_LANES <= n; k += RT_LANES) {
+        unsigned mask = rt_scene_hit4(c->scene, &r[k], HUGE_VAL, &h[k]);
+        for (int j = 0; j < RT_LANES; j++)
+            hit[k + j] = (mask >> j) & 1u;
+    }
+    for (; k < n; k++)
+        hit[k] = rt_scene_hit(c->scene, r[k], HUGE_VAL, &h[k]);
+    *segments += (uint64_t)n;
+}
+
 /* rt_bdpt_seen_emission with `left` segments and `splits` splits to go;
  * through_only: only what comes through a glass or mirror vertex first
  * (the emitter met first is left out). */
 static vec3 seen_any(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, bool through_only,
                      mc_rng *rng, uint64_t *segments)
 {
-    vec3 zero = vec3_make(0.0, 0.0, 0.0);
     rt_hit h;
     if (left < 1)
-        return zero;
+        return vec3_make(0.0, 0.0, 0.0);
     ++*segments;
-    if (!rt_scene_hit(c->scene, r, HUGE_VAL, &h))
-        return zero;
-    const rt_material *m = rt_scene_material(c->scene, h.material);
-    vec3 e = through_only ? zero : rt_material_emitted(m, &h);
-    if (!chain_material(m))
-        return e;
-    return vec3_add(e, through_chain_vertex(c, r, &h, m, left, splits, rng, segments));
+    bool hit = rt_scene_hit(c->scene, r, HUGE_VAL, &h);
+    return seen_at(c, r, hit ? &h : NULL, left, splits, through_only, rng, segments);
 }
 
 static vec3 seen(const rt_bdpt_ctx *c, rt_ray r, int left, int splits, mc_rng *rng,
@@ -155,7 +184,8 @@ vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t
  * (0,4,2)-net under a scramble keyed from aux: each point alone is
  * uniform, so the mean stays unbiased, and together they cover the
  * hemisphere's strata evenly (paired renders of the book scene: about 7%
- * less variance than independent directions, at the same cost). */
+ * less variance than independent directions, at the same cost). Their
+ * first segments go through the scene together (first_hits). */
 _Static_assert((RT_BDPT_THROUGH_RAYS & (RT_BDPT_THROUGH_RAYS - 1)) == 0,
                "the through rays are a whole Sobol net: a power of two");
 
@@ -166,11 +196,20 @@ vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int
     vec3 sum = vec3_make(0.0, 0.0, 0.0);
     onb frame = onb_from_w(d->ns);
     uint64_t key = ((uint64_t)mc_rng_u32(aux) << 32) | mc_rng_u32(aux);
+    int left = max_segments(c) - jd;
+    rt_ray r[RT_BDPT_THROUGH_RAYS];
+    rt_hit h[RT_BDPT_THROUGH_RAYS];
+    bool hit[RT_BDPT_THROUGH_RAYS];
     for (int i = 0; i < RT_BDPT_THROUGH_RAYS; i++) {
         double u1 = mc_sobol_owen((uint32_t)i, 0u, key, 0u);
         double u2 = mc_sobol_owen((uint32_t)i, 1u, key, 0u);
-        rt_ray r = rt_ray_make(d->p, pdf_cosine_direction(&frame, u1, u2));
-        sum = vec3_add(sum, seen_any(c, r, max_segments(c) - jd, RT_BDPT_SPLITS, true, aux, segments));
+        r[i] = rt_ray_make(d->p, pdf_cosine_direction(&frame, u1, u2));
+    }
+    if (left >= 1) {
+        first_hits(c, r, RT_BDPT_THROUGH_RAYS, h, hit, segments);
+        for (int i = 0; i < RT_BDPT_THROUGH_RAYS; i++)
+            sum = vec3_add(sum, seen_at(c, r[i], hit[i] ? &h[i] : NULL, left, RT_BDPT_SPLITS, true,
+                                        aux, segments));
     }
     return vec3_scale(vec3_mul(vec3_mul(d->beta, d->m->albedo), sum), 1.0 / RT_BDPT_THROUGH_RAYS);
 }
@@ -194,15 +233,28 @@ bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64
     const rt_camera *cam = c->camera;
     mc_rng rng = mc_rng_derive(seed ^ SEEN_EDGE_KEY, (uint64_t)y * (uint64_t)cam->width + (uint64_t)x);
     vec3 lo = vec3_make(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi = vec3_scale(lo, -1.0);
+    enum { n = 9 }; /* a 3 x 3 grid */
+    rt_ray r[n];
+    rt_hit h[n];
+    bool hit[n];
     for (int j = 0; j <= 2; j++)
         for (int i = 0; i <= 2; i++) {
             /* The far corners are inside the pixel by an ulp's worth. */
             double px = fmin((double)x + 0.5 * i, nextafter((double)x + 1.0, 0.0));
             double py = fmin((double)y + 0.5 * j, nextafter((double)y + 1.0, 0.0));
-            vec3 v = rt_bdpt_seen_emission(c, rt_camera_ray(cam, px, py), &rng, segments);
-            lo = vec3_make(fmin(lo.x, v.x), fmin(lo.y, v.y), fmin(lo.z, v.z));
-            hi = vec3_make(fmax(hi.x, v.x), fmax(hi.y, v.y), fmax(hi.z, v.z));
+            r[3 * j + i] = rt_camera_ray(cam, px, py);
         }
+    int left = max_segments(c);
+    if (left >= 1)
+        first_hits(c, r, n, h, hit, segments);
+    for (int k = 0; k < n; k++) {
+        /* rt_bdpt_seen_emission's value, its first segment traced above. */
+        vec3 v = left >= 1 ? seen_at(c, r[k], hit[k] ? &h[k] : NULL, left, RT_BDPT_SPLITS, false,
+                                     &rng, segments)
+                           : vec3_make(0.0, 0.0, 0.0);
+        lo = vec3_make(fmin(lo.x, v.x), fmin(lo.y, v.y), fmin(lo.z, v.z));
+        hi = vec3_make(fmax(hi.x, v.x), fmax(hi.y, v.y), fmax(hi.z, v.z));
+    }
     return hi.x - lo.x > 0.01 || hi.y - lo.y > 0.01 || hi.z - lo.z > 0.01;
 }
 

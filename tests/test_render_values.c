@@ -1,12 +1,13 @@
 /* tests/test_render_values.c - the values that decide a bidirectional
  * render's noise, pinned against numbers the test derives itself
  * (render/bdpt.h; Veach's thesis, 1997, chapters 9 and 10):
- *   - the power heuristic's weights of hand-built paths (camera - wall -
+ *   - the balance heuristic's weights of hand-built paths (camera - wall -
  *     lamp, camera - wall - wall - lamp, camera - wall - wall - wall -
  *     lamp), from each strategy's density written out here in the area
  *     measure (emitter area, cosine emission, cosine sampling, the film's
  *     density, each turned into area density by cos / distance^2), the
- *     direct light's splat scaled by RT_BDPT_DIRECT_SPLAT_SCALE; and the
+ *     direct light's splat scaled by RT_BDPT_DIRECT_SPLAT_SCALE and longer
+ *     paths' by RT_BDPT_SPLAT_SCALE; and the
  *     joins' weights from running sums against the same weights summed
  *     over the whole path, on those paths and on every join of renders;
  *   - the pinhole camera's importance and its density per unit area on a
@@ -18,13 +19,13 @@
  *     last vertex under the sanitizers);
  *   - the paths estimated apart are those only s = 0 can make: on every
  *     camera subpath that reaches the lamp through the glass ball, the
- *     rule against the power heuristic's weight of 1;
+ *     rule against the balance heuristic's weight of 1;
  *   - the rays traced by the families estimated apart (the lamp seen
  *     through glass and mirrors, the caustic seen through the sphere):
  *     an exact count in a scene where every ray's fate is known, and a
  *     per-sample upper bound from the depth in the book's scene.
  * Every value also has a negative control: the same check against a
- * plausible wrong value (the balance heuristic, the splat unscaled, a
+ * plausible wrong value (the power heuristic, either splat unscaled, a
  * square film, the lens cosine dropped, one depth short, one split level
  * short) must fail.
  * Compiling with -DVALUES_BREAK=k (1 weights, 2 camera, 3 furnace,
@@ -130,25 +131,31 @@ static double strategy_pdf(const hand_path *x, int r, const rt_camera_params *cp
 }
 
 /* The constant strategy r's density is scaled by in the weights: the
- * splat (r = 2) of a path of three vertices counts at `direct_splat`. */
-static double strategy_scale(const hand_path *x, int r, double direct_splat)
+ * splat (r = n - 1) of a path of three vertices counts at `direct_splat`,
+ * that of a longer path at `splat`. */
+static double strategy_scale(const hand_path *x, int r, double direct_splat, double splat)
 {
-    return x->n == 3 && r == 2 ? direct_splat : 1.0;
+    if (r != x->n - 1)
+        return 1.0;
+    return x->n == 3 ? direct_splat : splat;
 }
 
 /* The weight of strategy s under the heuristic of exponent beta (2: the
- * power heuristic the renderer uses, 1: the balance heuristic), each
- * density scaled as the renderer scales it (RT_BDPT_DIRECT_SPLAT_SCALE;
- * the controls pass 1): every strategy of a path of Lambertian vertices
- * can make it. */
+ * power heuristic, 1: the balance heuristic the renderer uses), each
+ * density scaled as the renderer scales it (RT_BDPT_DIRECT_SPLAT_SCALE and
+ * RT_BDPT_SPLAT_SCALE; the controls pass 1 for either): every strategy of
+ * a path of Lambertian vertices can make it. */
 static double hand_weight_scaled(const hand_path *x, int s, double beta, const rt_camera_params *cp,
-                                 double film, double light_area_pdf, double direct_splat)
+                                 double film, double light_area_pdf, double direct_splat,
+                                 double splat)
 {
     double sum = 0.0;
-    double ps = pow(strategy_scale(x, s, direct_splat) * strategy_pdf(x, s, cp, film, light_area_pdf),
+    double ps = pow(strategy_scale(x, s, direct_splat, splat) *
+                        strategy_pdf(x, s, cp, film, light_area_pdf),
                     beta);
     for (int r = 0; r < x->n; r++)
-        sum += pow(strategy_scale(x, r, direct_splat) * strategy_pdf(x, r, cp, film, light_area_pdf),
+        sum += pow(strategy_scale(x, r, direct_splat, splat) *
+                       strategy_pdf(x, r, cp, film, light_area_pdf),
                    beta);
 #if VALUES_BREAK == 1
     if (s == 1)
@@ -160,7 +167,8 @@ static double hand_weight_scaled(const hand_path *x, int s, double beta, const r
 static double hand_weight(const hand_path *x, int s, double beta, const rt_camera_params *cp,
                           double film, double light_area_pdf)
 {
-    return hand_weight_scaled(x, s, beta, cp, film, light_area_pdf, RT_BDPT_DIRECT_SPLAT_SCALE);
+    return hand_weight_scaled(x, s, beta, cp, film, light_area_pdf, RT_BDPT_DIRECT_SPLAT_SCALE,
+                              RT_BDPT_SPLAT_SCALE);
 }
 
 /* The renderer's vertices of the path: as the weight of the whole path
@@ -262,14 +270,15 @@ static double join_weight_light_forgotten(const rt_bdpt_ctx *c, const hand_path 
 }
 
 /* Every strategy's weight of the three paths, from rt_bdpt_mis_weight and
- * from the joins' cached densities, against the power heuristic over the
+ * from the joins' cached densities, against the balance heuristic over the
  * densities above: relative error < 1e-12 (the two computations share
  * no code; the tolerance is a few hundred roundings). Also the exception
  * of a lamp the camera sees directly (n = 2): all to s = 0. Negative
- * controls: the balance heuristic's weights (exponent 1) and the power
- * heuristic's without the splat's scale must each differ from the
+ * controls: the power heuristic's weights (exponent 2) and the balance
+ * heuristic's without the direct light's splat scale, or without the
+ * longer paths' splat scale, must each differ from the
  * renderer's by more than 1e-3 somewhere, and the renderer with
- * strategy 1 counted twice (neg.mis_double) from the power heuristic's. */
+ * strategy 1 counted twice (neg.mis_double) from the balance heuristic's. */
 static void test_mis_weights_by_hand(void **state)
 {
     negctl *nc = *state;
@@ -283,21 +292,25 @@ static void test_mis_weights_by_hand(void **state)
     rt_material white = rt_lambertian(vec3_make(0.73, 0.73, 0.73));
     double film = film_area(&cp, FILM_W, FILM_H);
     double light_pdf = 1.0 / (130.0 * 105.0); /* the lamp is 130 x 105 */
-    double worst = 0.0, balance_gap = 0.0, unscaled_gap = 0.0;
+    double worst = 0.0, power_gap = 0.0, unscaled_gap = 0.0, long_unscaled_gap = 0.0;
     for (int k = 0; k < 3; k++) {
         hand_path h = weight_path(k);
         rt_bdpt_vertex x[6];
         renderer_path(&h, s, &c, &white, x);
         for (int sv = 0; sv < h.n; sv++) {
-            double want = hand_weight(&h, sv, 2.0, &cp, film, light_pdf);
+            double want = hand_weight(&h, sv, 1.0, &cp, film, light_pdf);
             double got = rt_bdpt_mis_weight(&c, x, h.n, sv);
             double got_join = join_weight_of(&c, &h, s, x, sv);
             printf("path of %d vertices, s = %d: weight %.15f, joins' %.15f, by hand %.15f\n", h.n,
                    sv, got, got_join, want);
             worst = fmax(worst, fmax(rel_err(got, want), rel_err(got_join, want)));
-            balance_gap = fmax(balance_gap, fabs(got - hand_weight(&h, sv, 1.0, &cp, film, light_pdf)));
-            unscaled_gap = fmax(unscaled_gap,
-                                fabs(got - hand_weight_scaled(&h, sv, 2.0, &cp, film, light_pdf, 1.0)));
+            power_gap = fmax(power_gap, fabs(got - hand_weight(&h, sv, 2.0, &cp, film, light_pdf)));
+            unscaled_gap = fmax(unscaled_gap, fabs(got - hand_weight_scaled(&h, sv, 1.0, &cp, film,
+                                                                            light_pdf, 1.0,
+                                                                            RT_BDPT_SPLAT_SCALE)));
+            long_unscaled_gap =
+                fmax(long_unscaled_gap, fabs(got - hand_weight_scaled(&h, sv, 1.0, &cp, film, light_pdf,
+                                                                      RT_BDPT_DIRECT_SPLAT_SCALE, 1.0)));
         }
     }
     printf("largest relative error of a weight: %.2e\n", worst);
@@ -310,15 +323,18 @@ static void test_mis_weights_by_hand(void **state)
         rt_bdpt_vertex x5[6];
         renderer_path(&h5, s, &c, &white, x5);
         double forgot = fabs(join_weight_light_forgotten(&c, &h5, x5, 3) -
-                             hand_weight(&h5, 3, 2.0, &cp, film, light_pdf));
+                             hand_weight(&h5, 3, 1.0, &cp, film, light_pdf));
         if (!negctl_record(nc, "running sums without the light side", "weights by hand",
                            forgot > 1e-3))
             fail_msg("a running sum without the light subpath was not caught: gap %.2e", forgot);
     }
-    if (!negctl_record(nc, "the balance heuristic's weights", "weights by hand", balance_gap > 1e-3))
-        fail_msg("the balance heuristic is not told from the power heuristic: gap %.2e", balance_gap);
+    if (!negctl_record(nc, "the power heuristic's weights", "weights by hand", power_gap > 1e-3))
+        fail_msg("the power heuristic is not told from the balance heuristic: gap %.2e", power_gap);
     if (!negctl_record(nc, "the direct light's splat unscaled", "weights by hand", unscaled_gap > 1e-3))
         fail_msg("the splat's scale on direct light is not seen: gap %.2e", unscaled_gap);
+    if (!negctl_record(nc, "the longer paths' splats unscaled", "weights by hand",
+                       long_unscaled_gap > 1e-3))
+        fail_msg("the splat's scale on longer paths is not seen: gap %.2e", long_unscaled_gap);
     /* The renderer's own hook: strategy 1 counted twice in the sum. */
     rt_path_settings twice = ps;
     twice.neg.mis_double = 2;
@@ -327,7 +343,7 @@ static void test_mis_weights_by_hand(void **state)
     rt_bdpt_vertex x3[6];
     renderer_path(&h3, s, &cb, &white, x3);
     double gap = fabs(rt_bdpt_mis_weight(&cb, x3, h3.n, 2) -
-                      hand_weight(&h3, 2, 2.0, &cp, film, light_pdf));
+                      hand_weight(&h3, 2, 1.0, &cp, film, light_pdf));
     if (!negctl_record(nc, "a renderer counting strategy 1 twice", "weights by hand", gap > 1e-6))
         fail_msg("the double-counted strategy was not caught: gap %.2e", gap);
     /* The lamp seen directly: both strategies could make it, but the
@@ -467,10 +483,10 @@ static void test_camera_importance_and_density(void **state)
     rt_bdpt_vertex x[3];
     renderer_path(&h, s, &c, &white, x);
     double w1 = rt_bdpt_mis_weight(&c, x, 3, 1), w2 = rt_bdpt_mis_weight(&c, x, 3, 2);
-    /* w1 / w2 = p_1^2 / (c p_2)^2 with c the splat's scale (render/bdpt.h),
+    /* w1 / w2 = p_1 / (c p_2) with c the splat's scale (render/bdpt.h),
      * p_1 = pL pcam and p_2 = pL pemit. */
     double recovered = cosine_area_pdf(h.p[0], h.nrm[0], h.p[1], h.nrm[1]) *
-                       RT_BDPT_DIRECT_SPLAT_SCALE * sqrt(w1 / w2);
+                       RT_BDPT_DIRECT_SPLAT_SCALE * (w1 / w2);
     double want = camera_area_pdf(&cp, film, h.p[1], h.nrm[1]);
 #if VALUES_BREAK == 2
     want = camera_area_pdf(&cp, 4.0 * half_h * half_h, h.p[1], h.nrm[1]);
@@ -899,7 +915,7 @@ static void test_running_weights_every_join(void **state)
  * fills the view; 64 x 64 pixels, 64 samples each from pixel streams of
  * seed 2601, depth 50, roulette off and on), the path with
  * s = 0 is estimated apart (rt_bdpt_estimated_apart over the subpath's
- * through vertices) if and only if its power-heuristic weight
+ * through vertices) if and only if its balance-heuristic weight
  * (rt_bdpt_join_weight) is exactly 1: dropped with any other strategy
  * able to make it, the render would lose that strategy's share; kept
  * although no other can, the split rays would add it twice. At least 10
