@@ -6,7 +6,9 @@
 # FUZZ_SECONDS (default 60) on a working copy of its seed corpus
 # (tests/fuzz/corpus/NAME), so what the fuzzer adds stays in build/.
 # A crash, a leak or a sanitizer report fails the target, and the run
-# ends with the plain "N passed, N failed" line CI sums.
+# ends with the plain "N passed, N failed" line CI sums. The targets run
+# JOBS at a time, the Makefile's one count of parallel work (FUZZ_JOBS in
+# the environment still decides when set).
 
 FUZZ_SECONDS ?= 60
 FUZZ_B := build/fuzz
@@ -36,4 +38,4 @@ $(FUZZ_B)/fuzz_%: tests/fuzz/fuzz_%.c examples/common/sample_reader.c examples/c
 	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) $(fuzz_src_$*) -o $@
 
 _fuzz: $(foreach f,$(FUZZERS),$(FUZZ_B)/fuzz_$(f))
-	@sh tools/run_fuzz.sh $(FUZZ_B) $(FUZZ_SECONDS) $(FUZZERS)
+	@FUZZ_JOBS="$${FUZZ_JOBS:-$(JOBS)}" sh tools/run_fuzz.sh $(FUZZ_B) $(FUZZ_SECONDS) $(FUZZERS)
