@@ -25,12 +25,12 @@
  *   - each (s, t) weighted by the balance heuristic over the strategies
  *     that could have built the same path, w_s = p_s / sum_r p_r, with p_r
  *     the density (area measure, every vertex) with which strategy r
- *     samples it (Veach's power heuristic, the squares of the densities,
- *     left 6% more variance on the book scene and 8% on lambert:
- *     docs/performance.md). Specular vertices (glass, metal) cannot be joined: a
- *     strategy that would join at one is left out of the sum, and the
- *     densities through it count as 1 in both directions (the deltas
- *     cancel). Two exceptions to the heuristic (see weight_from in
+ *     samples it (it has 6.0% less variance than Veach's power heuristic,
+ *     the squares of the densities, on the book scene and 8.7% less on
+ *     lambert: docs/performance.md). Specular vertices (glass, metal)
+ *     cannot be joined: a strategy that would join at one is left out of
+ *     the sum, and the densities through it count as 1 in both directions
+ *     (the deltas cancel). Two exceptions to the heuristic (see weight_from in
  *     bdpt_mis.c): a path whose light end is reached through a specular
  *     vertex (the caustic) goes wholly to the joins when one can make it,
  *     not partly to s = 0; a lamp seen directly (two vertices) goes
