@@ -7,9 +7,9 @@
  *     measure (emitter area, cosine emission, cosine sampling, the film's
  *     density, each turned into area density by cos / distance^2), the
  *     direct light's splat scaled by RT_BDPT_DIRECT_SPLAT_SCALE and longer
- *     paths' by RT_BDPT_SPLAT_SCALE; and the
- *     joins' weights from running sums against the same weights summed
- *     over the whole path, on those paths and on every join of renders;
+ *     paths' by RT_BDPT_SPLAT_SCALE; and the joins' weights from running
+ *     sums against the same weights summed over the whole path, on those
+ *     paths and on every join of renders;
  *   - the pinhole camera's importance and its density per unit area on a
  *     300 x 200 film, against the closed forms and the normalisation of
  *     the importance over the film's directions;
@@ -276,8 +276,8 @@ static double join_weight_light_forgotten(const rt_bdpt_ctx *c, const hand_path 
  * of a lamp the camera sees directly (n = 2): all to s = 0. Negative
  * controls: the power heuristic's weights (exponent 2) and the balance
  * heuristic's without the direct light's splat scale, or without the
- * longer paths' splat scale, must each differ from the
- * renderer's by more than 1e-3 somewhere, and the renderer with
+ * longer paths' splat scale, must each differ from the renderer's by
+ * more than 1e-3 somewhere, and the renderer with
  * strategy 1 counted twice (neg.mis_double) from the balance heuristic's. */
 static void test_mis_weights_by_hand(void **state)
 {
