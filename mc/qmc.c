@@ -267,7 +267,7 @@ static uint32_t sobol_dim1_reversed(uint32_t i)
     return i;
 }
 
-static double sobol_owen_keyed(uint32_t i, unsigned dim, uint32_t key)
+double mc_sobol_owen_keyed(uint32_t i, unsigned dim, uint32_t key)
 {
     /* Dimension 0's generator matrix is the identity read from the top
      * bit down, so its point is i reversed, and the scramble's first
@@ -287,7 +287,7 @@ double mc_sobol_xor(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
 
 double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream)
 {
-    return sobol_owen_keyed(i, dim, mc_qmc_key(seed, stream, dim));
+    return mc_sobol_owen_keyed(i, dim, mc_qmc_key(seed, stream, dim));
 }
 /* END SNIPPET owen_scramble */
 
@@ -378,7 +378,7 @@ double mc_sobol_padded1_sized(uint64_t pixel_key, uint32_t dim, uint32_t k, mc_p
 {
     uint64_t h = stream_mix(pixel_key, 2u * (uint64_t)dim);
     uint32_t index = mc_permutation_element_sized(k, n, (uint32_t)h);
-    return sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
+    return mc_sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
 }
 
 void mc_sobol_padded2_sized(uint64_t pixel_key, uint32_t dim, uint32_t k, mc_permutation_size n,
@@ -387,8 +387,8 @@ void mc_sobol_padded2_sized(uint64_t pixel_key, uint32_t dim, uint32_t k, mc_per
     uint64_t h = stream_mix(pixel_key, 2u * (uint64_t)dim);
     uint64_t h2 = stream_mix(pixel_key, 2u * (uint64_t)dim + 1u);
     uint32_t index = mc_permutation_element_sized(k, n, (uint32_t)h);
-    u[0] = sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
-    u[1] = sobol_owen_keyed(index, 1u, (uint32_t)h2);
+    u[0] = mc_sobol_owen_keyed(index, 0u, (uint32_t)(h >> 32));
+    u[1] = mc_sobol_owen_keyed(index, 1u, (uint32_t)h2);
 }
 
 double mc_sobol_padded1_keyed(uint64_t pixel_key, uint32_t dim, uint32_t k, uint32_t n)
@@ -453,7 +453,7 @@ double mc_qmc_next(mc_qmc_cursor *c)
     case MC_QMC_SOBOL_XOR:
         return sobol_xor_keyed(i, d, index_key(c->base, d));
     case MC_QMC_SOBOL_OWEN:
-        return sobol_owen_keyed(i, d, index_key(c->base, d));
+        return mc_sobol_owen_keyed(i, d, index_key(c->base, d));
     }
     return 0.0;
 }

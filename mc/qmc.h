@@ -95,6 +95,11 @@ double mc_sobol(uint32_t i, unsigned dim);
 double mc_sobol_xor(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
 double mc_sobol_owen(uint32_t i, unsigned dim, uint64_t seed, uint64_t stream);
 
+/* mc_sobol_owen with the key of its dimension given, key =
+ * mc_qmc_key(seed, stream, dim): the same bits, for a caller that draws
+ * many points of one dimension and hashes the key once. */
+double mc_sobol_owen_keyed(uint32_t i, unsigned dim, uint32_t key);
+
 /* Element i of a random permutation of {0, ..., n-1} chosen by `key`
  * (Kensler's cycle-walking hash, "Correlated Multi-Jittered Sampling",
  * 2013): a way to visit the samples of a pixel in an order that differs

@@ -47,6 +47,34 @@ bool rt_bdpt_camera_importance(const rt_bdpt_ctx *c, vec3 p, size_t *px, double 
 }
 /* END SNIPPET camera_importance */
 
+/* Whether the path light[0..s) then cam[0..t) reversed has a segment
+ * shorter than min: between neighbours within either subpath, or the
+ * join between light[s - 1] and cam[t - 1] (s > 0). */
+static bool has_short_segment(const rt_bdpt_vertex *light, int s, const rt_bdpt_vertex *cam, int t,
+                              double min)
+{
+    double min_sq = min * min;
+    for (int i = 0; i + 1 < s; i++)
+        if (vec3_length_sq(vec3_sub(light[i + 1].p, light[i].p)) < min_sq)
+            return true;
+    for (int j = 0; j + 1 < t; j++)
+        if (vec3_length_sq(vec3_sub(cam[j + 1].p, cam[j].p)) < min_sq)
+            return true;
+    return s > 0 && vec3_length_sq(vec3_sub(cam[t - 1].p, light[s - 1].p)) < min_sq;
+}
+
+/* Whether a render of the one strategy (ps->bdpt_s, ps->bdpt_t) counts
+ * strategy (s, t) of this sample: the chosen one, without a segment
+ * shorter than ps->bdpt_min_segment. */
+static bool single_keeps(const rt_path_settings *ps, const rt_bdpt_vertex *light, int s,
+                         const rt_bdpt_vertex *cam, int t)
+{
+    if (s != ps->bdpt_s || t != ps->bdpt_t)
+        return false;
+    return !(ps->bdpt_min_segment > 0.0 &&
+             has_short_segment(light, s, cam, t, ps->bdpt_min_segment));
+}
+
 /* BEGIN SNIPPET bdpt_strategies */
 vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler, mc_rng *aux,
                     bool seen_here, rt_splats *splats, uint64_t *segments)
@@ -87,7 +115,7 @@ vec3 rt_bdpt_sample(const rt_bdpt_ctx *c, rt_ray camera_ray, rt_sampler *sampler
              * bdpt_mis.c). */
             if (all && s == 1 && t == 1)
                 continue;
-            if (!all && !lighttrace && (s != ps->bdpt_s || t != ps->bdpt_t))
+            if (!all && !lighttrace && !single_keeps(ps, light, s, cam, t))
                 continue;
             if (t == 1) {
                 rt_bdpt_splat_to_camera(c, light, s, &cam[0], all ? &sp : NULL, all ? aux : NULL,

@@ -95,6 +95,9 @@ static inline void rt_bdpt_emit_prepare(const rt_bdpt_ctx *c, vec3 p, rt_lights_
  * rt_bdpt_cache_pdfs for the weights of its joins. */
 vec3 rt_bdpt_emit_direction_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n,
                                rt_sampler *sampler);
+/* rt_bdpt_emit_direction_at from the 2D request's uniforms (u1, u2). */
+vec3 rt_bdpt_emit_direction_uv(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n, double u1,
+                               double u2);
 double rt_bdpt_emit_pdf_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n, vec3 d);
 
 /* --- densities and weights (bdpt_mis.c) ------------------------------- */
@@ -237,10 +240,22 @@ int rt_bdpt_through_vertices(const rt_bdpt_vertex *cam, int nc, int *jd);
 bool rt_bdpt_estimated_apart(const rt_path_settings *ps, const rt_bdpt_vertex *cam, int t,
                              const int *jd, int njd);
 
+/* The share of the cosine-weighted hemisphere about the unit normal ns
+ * at p that the light list's spheres (rt_scene_targets) cover:
+ * sum (r / d)^2 max(cos alpha, 0) over the spheres of radius r whose
+ * centre is at distance d, at angle alpha from ns. The projected solid
+ * angle of a sphere wholly above the horizon is pi (r / d)^2 cos alpha,
+ * and the hemisphere's is pi; a sphere that crosses the horizon counts
+ * less than it covers (the part below subtracts), and quads count
+ * nothing. */
+double rt_bdpt_target_share(const rt_scene *s, vec3 p, vec3 ns);
+
 /* The paths E (S+ D)+ S+ L through the through vertex D = d = cam[jd]:
- * the mean over RT_BDPT_THROUGH_RAYS cosine-sampled directions at D of
- * what comes back through glass and mirrors, times the subpath's weight
- * up to D; the draws come from aux. Adds the rays traced to *segments. */
+ * the mean over RT_BDPT_THROUGH_RAYS cosine-sampled directions at D
+ * (RT_BDPT_THROUGH_RAYS_NEAR where rt_bdpt_target_share of D exceeds
+ * RT_BDPT_THROUGH_NEAR) of what comes back through glass and mirrors,
+ * times the subpath's weight up to D; the draws come from aux. Adds the
+ * rays traced to *segments. */
 vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int jd, mc_rng *aux,
                               uint64_t *segments);
 

@@ -7,7 +7,6 @@
 #include "mc/onb.h"
 #include "mc/qmc.h"
 #include "render/bdpt_internal.h"
-#include "render/jitter.h"
 #include "render/lights.h"
 
 /* --- which paths are estimated apart ---------------------------------- */
@@ -180,14 +179,30 @@ vec3 rt_bdpt_seen_emission(const rt_bdpt_ctx *c, rt_ray r, mc_rng *rng, uint64_t
 
 /* Cosine sampling at the Lambertian D: BRDF x cos / density is the
  * albedo, whatever the direction. The rays' uniforms are the points of
- * an Owen-scrambled Sobol set of RT_BDPT_THROUGH_RAYS = 2^4 points, a
- * (0,4,2)-net under a scramble keyed from aux: each point alone is
- * uniform, so the mean stays unbiased, and together they cover the
- * hemisphere's strata evenly (paired renders of the book scene: about 7%
- * less variance than independent directions, at the same cost). Their
- * first segments go through the scene together (first_hits). */
-_Static_assert((RT_BDPT_THROUGH_RAYS & (RT_BDPT_THROUGH_RAYS - 1)) == 0,
+ * an Owen-scrambled Sobol set of n = 2^m points, a (0,m,2)-net under a
+ * scramble keyed from aux: each point alone is uniform, so the mean stays
+ * unbiased, and together they cover the hemisphere's strata evenly
+ * (paired renders of the book scene: about 7% less variance than
+ * independent directions, at the same cost). Their first segments go
+ * through the scene together (first_hits). */
+_Static_assert((RT_BDPT_THROUGH_RAYS & (RT_BDPT_THROUGH_RAYS - 1)) == 0 &&
+                   (RT_BDPT_THROUGH_RAYS_NEAR & (RT_BDPT_THROUGH_RAYS_NEAR - 1)) == 0,
                "the through rays are a whole Sobol net: a power of two");
+
+double rt_bdpt_target_share(const rt_scene *s, vec3 p, vec3 ns)
+{
+    const rt_light *t = rt_scene_targets(s);
+    double share = 0.0;
+    for (int i = 0; i < rt_scene_target_count(s); i++) {
+        if (t[i].kind != RT_PRIM_SPHERE)
+            continue;
+        vec3 to = vec3_sub(t[i].center, p);
+        double d_sq = vec3_length_sq(to), cos_alpha = vec3_dot(to, ns) / sqrt(d_sq);
+        if (cos_alpha > 0.0)
+            share += t[i].radius * t[i].radius / d_sq * cos_alpha;
+    }
+    return share;
+}
 
 /* BEGIN SNIPPET bdpt_through */
 vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int jd, mc_rng *aux,
@@ -197,21 +212,24 @@ vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int
     onb frame = onb_from_w(d->ns);
     uint64_t key = ((uint64_t)mc_rng_u32(aux) << 32) | mc_rng_u32(aux);
     int left = max_segments(c) - jd;
-    rt_ray r[RT_BDPT_THROUGH_RAYS];
-    rt_hit h[RT_BDPT_THROUGH_RAYS];
-    bool hit[RT_BDPT_THROUGH_RAYS];
-    for (int i = 0; i < RT_BDPT_THROUGH_RAYS; i++) {
+    int n = rt_bdpt_target_share(c->scene, d->p, d->ns) > RT_BDPT_THROUGH_NEAR
+                ? RT_BDPT_THROUGH_RAYS_NEAR
+                : RT_BDPT_THROUGH_RAYS;
+    rt_ray r[RT_BDPT_THROUGH_RAYS_NEAR];
+    rt_hit h[RT_BDPT_THROUGH_RAYS_NEAR];
+    bool hit[RT_BDPT_THROUGH_RAYS_NEAR];
+    for (int i = 0; i < n; i++) {
         double u1 = mc_sobol_owen((uint32_t)i, 0u, key, 0u);
         double u2 = mc_sobol_owen((uint32_t)i, 1u, key, 0u);
         r[i] = rt_ray_make(d->p, pdf_cosine_direction(&frame, u1, u2));
     }
     if (left >= 1) {
-        first_hits(c, r, RT_BDPT_THROUGH_RAYS, h, hit, segments);
-        for (int i = 0; i < RT_BDPT_THROUGH_RAYS; i++)
+        first_hits(c, r, n, h, hit, segments);
+        for (int i = 0; i < n; i++)
             sum = vec3_add(sum, seen_at(c, r[i], hit[i] ? &h[i] : NULL, left, RT_BDPT_SPLITS, true,
                                         aux, segments));
     }
-    return vec3_scale(vec3_mul(vec3_mul(d->beta, d->m->albedo), sum), 1.0 / RT_BDPT_THROUGH_RAYS);
+    return vec3_scale(vec3_mul(vec3_mul(d->beta, d->m->albedo), sum), 1.0 / n);
 }
 /* END SNIPPET bdpt_through */
 
@@ -222,6 +240,8 @@ vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int
  * mc_rng_derive(seed, pixel)). */
 #define SEEN_EDGE_KEY 0x5ee9ed9e5ee9ed9eull
 #define SEEN_SAMPLE_KEY 0x5ee95a3b1e5ee95aull
+/* The edge term's points (rt_bdpt_seen_sample): keys of seed ^ this. */
+#define SEEN_NET_KEY 0x5ee9e7c05ee9e7c0ull
 
 mc_rng rt_bdpt_aux_stream(uint64_t seed, uint64_t sample)
 {
@@ -259,20 +279,31 @@ bool rt_bdpt_seen_edge(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64
 }
 
 /* BEGIN SNIPPET bdpt_seen_sample */
-vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, mc_rng *aux, uint64_t *segments)
+vec3 rt_bdpt_seen_sample(const rt_bdpt_ctx *c, int x, int y, uint64_t seed, uint64_t k, mc_rng *aux,
+                         uint64_t *segments)
 {
-    /* One jittered ray in each cell of a g x g grid: the mean over the
-     * cells of stratified points, unbiased for the pixel's mean. */
-    enum { g = 8 };
-    _Static_assert(g * g == RT_BDPT_EDGE_SUBSAMPLES, "the grid is RT_BDPT_EDGE_SUBSAMPLES cells");
+    /* The points k n .. k n + n - 1 (n = RT_BDPT_EDGE_SUBSAMPLES = 2^m)
+     * of the pixel's Owen-scrambled Sobol sequence: one aligned block, a
+     * (0, m, 2)-net (for 64, one point in each cell of an 8 x 8 grid); and
+     * the blocks of the pixel's samples together are the sequence's first
+     * points, which fill the pixel evenly at every scale. Each point alone
+     * is uniform over the pixel, so the mean is unbiased for the pixel's
+     * mean. The indices run past 2^32 only beyond 2^26 samples per pixel:
+     * each 2^26 samples then take a fresh scramble. */
+    enum { n = RT_BDPT_EDGE_SUBSAMPLES };
+    _Static_assert((n & (n - 1)) == 0, "a sample's rays are a whole Sobol net: a power of two");
+    uint64_t pixel = (uint64_t)y * (uint64_t)c->camera->width + (uint64_t)x;
+    uint64_t pixel_seed = mc_qmc_stream_seed(seed ^ SEEN_NET_KEY, pixel);
+    uint64_t block = k / (UINT32_MAX / n + 1u);
+    uint32_t key0 = mc_qmc_key(pixel_seed, block, 0u), key1 = mc_qmc_key(pixel_seed, block, 1u);
+    uint32_t i0 = (uint32_t)(k * n);
     vec3 sum = vec3_make(0.0, 0.0, 0.0);
-    for (int j = 0; j < g; j++)
-        for (int i = 0; i < g; i++) {
-            double u1 = mc_rng_uniform(aux), u2 = mc_rng_uniform(aux);
-            rt_ray sub = rt_camera_ray(c->camera, (double)x + rt_jitter_in_cell((uint64_t)i, g, u1),
-                                       (double)y + rt_jitter_in_cell((uint64_t)j, g, u2));
-            sum = vec3_add(sum, rt_bdpt_seen_emission(c, sub, aux, segments));
-        }
-    return vec3_scale(sum, 1.0 / (g * g));
+    for (uint32_t j = 0; j < n; j++) {
+        uint32_t i = i0 + j;
+        rt_ray sub = rt_camera_ray(c->camera, (double)x + mc_sobol_owen_keyed(i, 0u, key0),
+                                   (double)y + mc_sobol_owen_keyed(i, 1u, key1));
+        sum = vec3_add(sum, rt_bdpt_seen_emission(c, sub, aux, segments));
+    }
+    return vec3_scale(sum, 1.0 / n);
 }
 /* END SNIPPET bdpt_seen_sample */

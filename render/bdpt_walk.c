@@ -105,10 +105,27 @@ int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex
     if (ne == 0 || max_n < 1)
         return 0;
     rt_sampler_segment(sampler, c->ps->max_depth + 1);
-    int i = (int)rt_sampler_index(sampler, (uint32_t)ne);
+    /* The start's uniforms: the emitter, the point on it (u1, u2), the
+     * direction (u[0], u[1]). With Sobol points they are one point of the
+     * image's sequence (rt_sampler_image_point): a light subpath's splats
+     * land anywhere in the image, and the light subpaths of all the
+     * pixels then fill the start's domain as one low-discrepancy set, not
+     * as independent sets of spp points each. Its dimensions 0 and 1, the
+     * best spread pair, go to the direction, which decides where the
+     * light lands. */
+    double u[RT_SAMPLER_IMAGE_DIMS], u1, u2;
+    int i;
+    if (sampler->sobol) {
+        /* Dimension 4 picks the emitter, and only where there is a choice. */
+        rt_sampler_image_point(sampler, ne > 1 ? 5u : 4u, u);
+        i = ne > 1 ? (int)rt_sampler_index_of(u[4], (uint32_t)ne) : 0;
+        u1 = u[2];
+        u2 = u[3];
+    } else {
+        i = (int)rt_sampler_index(sampler, (uint32_t)ne);
+        rt_sampler_2d(sampler, &u1, &u2);
+    }
     const rt_prim *e = &rt_scene_emitter_prims(s)[i];
-    double u1, u2;
-    rt_sampler_2d(sampler, &u1, &u2);
     vec3 p, n;
     if (e->kind == RT_PRIM_QUAD) {
         const rt_quad *q = &e->as.quad;
@@ -128,7 +145,8 @@ int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex
         return 1;
     rt_lights_at at;
     rt_bdpt_emit_prepare(c, p, &at);
-    vec3 dir = rt_bdpt_emit_direction_at(c, &at, n, sampler);
+    vec3 dir = sampler->sobol ? rt_bdpt_emit_direction_uv(c, &at, n, u[0], u[1])
+                              : rt_bdpt_emit_direction_at(c, &at, n, sampler);
     double cos_e = vec3_dot(dir, n);
     if (!(cos_e > 0.0))
         return 1;
@@ -142,11 +160,9 @@ int rt_bdpt_light_walk(const rt_bdpt_ctx *c, rt_sampler *sampler, rt_bdpt_vertex
 }
 
 /* BEGIN SNIPPET emit_aim */
-vec3 rt_bdpt_emit_direction_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n,
-                               rt_sampler *sampler)
+vec3 rt_bdpt_emit_direction_uv(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n, double u1,
+                               double u2)
 {
-    double u1, u2;
-    rt_sampler_2d(sampler, &u1, &u2);
     if (c->aim > 0.0) {
         /* u1 < aim chooses the targets, and u1 rescaled to [0, 1) is
          * uniform again given the choice: it picks the target (uniformly,
@@ -164,6 +180,14 @@ vec3 rt_bdpt_emit_direction_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec
     return pdf_cosine_direction(&frame, u1, u2);
 }
 /* END SNIPPET emit_aim */
+
+vec3 rt_bdpt_emit_direction_at(const rt_bdpt_ctx *c, const rt_lights_at *at, vec3 n,
+                               rt_sampler *sampler)
+{
+    double u1, u2;
+    rt_sampler_2d(sampler, &u1, &u2);
+    return rt_bdpt_emit_direction_uv(c, at, n, u1, u2);
+}
 
 vec3 rt_bdpt_emit_direction(const rt_bdpt_ctx *c, vec3 p, vec3 n, rt_sampler *sampler)
 {

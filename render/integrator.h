@@ -125,6 +125,16 @@ typedef struct rt_path_settings {
      * strategy (bdpt_s light vertices, bdpt_t camera vertices),
      * unweighted (render/bdpt.h). */
     int bdpt_s, bdpt_t;
+    /* RT_BDPT with one strategy chosen: a path with a segment shorter
+     * than this (between two of its vertices, the join's included)
+     * contributes nothing; 0, the default, keeps every path. Every
+     * strategy then estimates the same integral, with the short segments
+     * cut out. For the tests that compare strategies: a join of two
+     * diffuse vertices near the corner of a room has a geometry term
+     * like 1 / r^2, whose square is not integrable there, so such a
+     * strategy alone has no finite variance and its t statistic no
+     * Student tail; with a floor on the segments every term is bounded. */
+    double bdpt_min_segment;
     /* RT_BDPT in a scene whose light list holds entries that do not emit
      * (rt_scene_targets: the book's glass sphere): the
      * probability, in [0, 1), with which a light subpath's first direction

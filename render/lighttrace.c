@@ -22,7 +22,8 @@ rt_row_counts rt_row_splat(const rt_row *r)
             vec3 L = rt_bdpt_sample(r->ctx, ray, &sampler, &aux, weighted && !r->edges[idx],
                                     r->splats, &n.segments);
             if (weighted && r->edges[idx])
-                L = vec3_add(L, rt_bdpt_seen_sample(r->ctx, x, r->y, &aux, &n.segments));
+                L = vec3_add(L, rt_bdpt_seen_sample(r->ctx, x, r->y, job->seed, k, &aux,
+                                                    &n.segments));
             if (!rt_pixel_add(&r->img->px[idx], L))
                 n.dropped++;
         }

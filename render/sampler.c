@@ -23,6 +23,10 @@ const char *rt_sampler_name(rt_sampler_kind kind)
     return (unsigned)kind <= (unsigned)RT_SAMPLER_DEFAULT ? rt_sampler_names[kind] : "?";
 }
 
+/* The image's sequence is scrambled with keys of seed ^ this, apart
+ * from the pixels' padded points (keyed by (seed, pixel)). */
+#define IMAGE_SEQUENCE_KEY 0x1a6e5e9c1a6e5e9cull
+
 rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, mc_rng rng,
                             uint64_t pixel)
 {
@@ -31,8 +35,21 @@ rt_sampler rt_sampler_pixel(rt_sampler_kind kind, uint64_t seed, uint64_t spp, m
         s.sobol = true;
         s.n = mc_permutation_size_make((uint32_t)spp);
         s.base = mc_sobol_padded_key(mc_qmc_stream_seed(seed, pixel));
+        s.first = pixel * spp;
+        s.seed = seed;
+        for (unsigned d = 0; d < RT_SAMPLER_IMAGE_DIMS; d++)
+            s.image_key[d] = mc_qmc_key(seed ^ IMAGE_SEQUENCE_KEY, s.first >> 32, d);
     }
     return s;
+}
+
+void rt_sampler_image_point(const rt_sampler *s, unsigned n, double *u)
+{
+    uint64_t g = s->first + s->k;
+    bool same_block = (g >> 32) == (s->first >> 32);
+    for (unsigned d = 0; d < n; d++)
+        u[d] = same_block ? mc_sobol_owen_keyed((uint32_t)g, d, s->image_key[d])
+                          : mc_sobol_owen((uint32_t)g, d, s->seed ^ IMAGE_SEQUENCE_KEY, g >> 32);
 }
 
 /* Dimensions are never handed out twice within a sample (a 1D request

@@ -76,6 +76,10 @@ const char *rt_sampler_name(rt_sampler_kind kind);
  * fuzz 2 and roulette 1). */
 #define RT_SAMPLER_SEGMENT_DIMS 8u
 
+/* Most dimensions of a point of the image's sequence
+ * (rt_sampler_image_point). */
+#define RT_SAMPLER_IMAGE_DIMS 5u
+
 /* The sampler of one pixel while it takes one sample. */
 typedef struct rt_sampler {
     mc_rng rng;   /* the pixel's PCG32 stream: every draw unless sobol */
@@ -89,13 +93,19 @@ typedef struct rt_sampler {
     uint32_t k;    /* sobol: this sample's index */
     mc_permutation_size n; /* sobol: the pixel's sample count, made once */
     uint64_t base; /* sobol: mc_sobol_padded_key(mc_qmc_stream_seed(seed, pixel)) */
+    /* sobol, the image's sequence (rt_sampler_image_point): the index of
+     * the pixel's sample 0 in it, pixel x spp; the render's seed; and the
+     * scramble keys of its dimensions for the block of 2^32 indices that
+     * holds `first`, hashed once per pixel. */
+    uint64_t first, seed;
+    uint32_t image_key[RT_SAMPLER_IMAGE_DIMS];
 } rt_sampler;
 
 /* A sampler drawing every uniform from rng (independent and stratified,
  * and the tests' way to call the integrator with a stream). */
 static inline rt_sampler rt_sampler_from_rng(mc_rng rng)
 {
-    rt_sampler s = {rng, false, false, 0, 0, {1, 0, 0}, 0};
+    rt_sampler s = {rng, false, false, 0, 0, {1, 0, 0}, 0, 0, 0, {0}};
     return s;
 }
 
@@ -160,16 +170,39 @@ RT_HOT_INLINE void rt_sampler_2d(rt_sampler *s, double *u1, double *u2)
     rt_sampler_sobol_2d(s, u1, u2);
 }
 
+/* The integer in [0, n), n >= 1, that a uniform u in [0, 1) picks:
+ * floor(n u), kept below n. */
+static inline uint32_t rt_sampler_index_of(double u, uint32_t n)
+{
+    uint32_t i = (uint32_t)(u * (double)n);
+    return i < n ? i : n - 1u;
+}
+
 /* A uniformly chosen integer in [0, n), n >= 1: PCG32's unbiased bounded
- * draw (mc_rng_bounded), or floor(n u) of the next 1D (u one of the 2^32
- * equally likely multiples of 2^-32: each integer's probability is off
- * from 1 / n by less than 2^-32, far below any error bar). */
+ * draw (mc_rng_bounded), or rt_sampler_index_of the next 1D (u one of the
+ * 2^32 equally likely multiples of 2^-32: each integer's probability is
+ * off from 1 / n by less than 2^-32, far below any error bar). */
 RT_HOT_INLINE uint32_t rt_sampler_index(rt_sampler *s, uint32_t n)
 {
     if (!s->sobol)
         return mc_rng_bounded(&s->rng, n);
-    uint32_t i = (uint32_t)(rt_sampler_sobol_1d(s) * (double)n);
-    return i < n ? i : n - 1u;
+    return rt_sampler_index_of(rt_sampler_sobol_1d(s), n);
 }
+
+/* Dimensions 0 .. n - 1 (n <= RT_SAMPLER_IMAGE_DIMS) of this sample's
+ * point in the image's sequence, into u[0 .. n): for a sobol sampler
+ * only. The padded points of a pixel (rt_sampler_1d, rt_sampler_2d) are
+ * stratified over that pixel's samples, and the pixels' sets are
+ * independent. The image's sequence is one Owen-scrambled Sobol sequence
+ * (its dimensions 0 .. n - 1 together, not padded) over every sample of
+ * the image: sample k of pixel p is its point p x spp + k, scrambled with
+ * keys of the render's seed (a fresh scramble for each block of 2^32
+ * indices). So the samples of the whole image fill the n-dimensional cube
+ * as one low-discrepancy set, and a pixel's samples, consecutive points,
+ * fill it evenly too. Meant for draws whose result lands in any pixel, not
+ * only the sample's own: the start of a light subpath, whose splats
+ * spread over the image. Each point alone is uniform, so an estimate
+ * from it stays unbiased. */
+void rt_sampler_image_point(const rt_sampler *s, unsigned n, double *u);
 
 #endif /* RT_SAMPLER_H */

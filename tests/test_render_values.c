@@ -23,7 +23,10 @@
  *   - the rays traced by the families estimated apart (the lamp seen
  *     through glass and mirrors, the caustic seen through the sphere):
  *     an exact count in a scene where every ray's fate is known, and a
- *     per-sample upper bound from the depth in the book's scene.
+ *     per-sample upper bound from the depth in the book's scene; the
+ *     share of the hemisphere the ball covers, which chooses how many
+ *     rays the caustic's term sends, against cosine-distributed
+ *     directions, and those counts.
  * Every value also has a negative control: the same check against a
  * plausible wrong value (the power heuristic, either splat unscaled, a
  * square film, the lens cosine dropped, one depth short, one split level
@@ -42,6 +45,7 @@
 #include "mc/constants.h"
 #include "mc/onb.h"
 #include "mc/stats.h"
+#include "pdf/pdf.h"
 #include "render/bdpt.h"
 #include "render/bdpt_internal.h"
 #include "render/render.h"
@@ -763,7 +767,8 @@ static void test_seen_rays_exact(void **state)
  * (at most 2 f(D - 1, S - 1) = f(D, S) - 1), and the split rays at each
  * through vertex (rt_bdpt_through_vertices: Lambertian vertices with glass
  * or mirrors on both sides, so at indices 2, 4, 6, ... at the most):
- * RT_BDPT_THROUGH_RAYS f(D - jd, S) at jd. */
+ * RT_BDPT_THROUGH_RAYS_NEAR f(D - jd, S) at jd, the count near the
+ * ball (RT_BDPT_THROUGH_RAYS elsewhere). */
 static uint64_t sample_core(int d)
 {
     uint64_t D = (uint64_t)d;
@@ -777,7 +782,7 @@ static uint64_t sample_max(int d)
 #else
     uint64_t through = 0;
     for (int jd = 2; jd < d; jd += 2)
-        through += (uint64_t)RT_BDPT_THROUGH_RAYS * seen_max(d - jd, RT_BDPT_SPLITS);
+        through += (uint64_t)RT_BDPT_THROUGH_RAYS_NEAR * seen_max(d - jd, RT_BDPT_SPLITS);
     return sample_core(d) + seen_max(d, RT_BDPT_SPLITS) - 1u + through;
 #endif
 }
@@ -823,7 +828,7 @@ static void test_seen_rays_bounded(void **state)
                     rt_bdpt_sample(&c, r, &sampler, &aux, true, splat, &seg);
                     most = seg > most ? seg : most;
                     seg = 0;
-                    rt_bdpt_seen_sample(&c, x, y, &aux, &seg);
+                    rt_bdpt_seen_sample(&c, x, y, seed, k, &aux, &seg);
                     most_edge = seg > most_edge ? seg : most_edge;
                 }
             }
@@ -858,6 +863,81 @@ static void test_seen_rays_bounded(void **state)
         rt_image_destroy(img);
     }
     rt_splats_destroy(splat);
+    rt_scene_destroy(s);
+}
+
+/* The through rays' count near the ball. First the share that chooses
+ * it, rt_bdpt_target_share, at two points of the book's floor (normal up;
+ * the ball stands on the floor, so it is wholly above the horizon from
+ * any floor point, where (r / d)^2 cos alpha is exact): under the ball
+ * beside its foot and 200 units off in x and z, against the share of
+ * 2^20 cosine-distributed directions (PCG32, seed 2701) that meet the
+ * ball, z = (share - hits / N) / sqrt(share (1 - share) / N), |z| < 4.42
+ * each (two-sided false alarm 1e-5). Negative control: the share without
+ * the cosine, (r / d)^2, must miss by more at the far point. Then the
+ * count itself: with max depth jd + 1 every ray traces its first segment
+ * alone, so a through term at vertex jd = 2 traces exactly its count of
+ * rays: RT_BDPT_THROUGH_RAYS_NEAR at the point under the ball,
+ * RT_BDPT_THROUGH_RAYS at the far one. */
+static void test_through_rays_near_the_ball(void **state)
+{
+    negctl *nc = *state;
+    rt_camera_params cp;
+    rt_scene *s = rt_scene_named("book", &cp);
+    assert_true(rt_scene_target_count(s) == 1 && rt_scene_targets(s)[0].kind == RT_PRIM_SPHERE);
+    rt_light ball = rt_scene_targets(s)[0];
+    vec3 up = vec3_make(0.0, 1.0, 0.0);
+    vec3 pts[2] = {vec3_make(ball.center.x + 10.0, 0.0, ball.center.z + 10.0),
+                   vec3_make(ball.center.x + 200.0, 0.0, ball.center.z + 200.0)};
+    enum { N = 1 << 20 };
+    const double thr = 4.42;
+    double z_nocos = 0.0;
+    mc_rng rng = mc_rng_derive(mc_test_seed(2701u), 0u);
+    onb frame = onb_from_w(up);
+    for (int k = 0; k < 2; k++) {
+        uint64_t hits = 0;
+        for (int i = 0; i < N; i++) {
+            double u1 = mc_rng_uniform(&rng), u2 = mc_rng_uniform(&rng);
+            vec3 dir = pdf_cosine_direction(&frame, u1, u2);
+            vec3 to = vec3_sub(ball.center, pts[k]);
+            double along = vec3_dot(to, dir);
+            hits += along > 0.0 && vec3_length_sq(to) - along * along < ball.radius * ball.radius;
+        }
+        double share = rt_bdpt_target_share(s, pts[k], up), p = (double)hits / N;
+        double se = sqrt(share * (1.0 - share) / N), z = (share - p) / se;
+        vec3 to = vec3_sub(ball.center, pts[k]);
+        double nocos = ball.radius * ball.radius / vec3_length_sq(to);
+        double zn = (nocos - p) / sqrt(nocos * (1.0 - nocos) / N);
+        printf("floor point %d: share %.6f, cosine directions meeting the ball %.6f, |z| %.2f "
+               "(threshold %.2f); without the cosine %.6f, |z| %.1f\n",
+               k, share, p, fabs(z), thr, nocos, fabs(zn));
+        assert_true(fabs(z) < thr);
+        if (k == 1)
+            z_nocos = fabs(zn);
+    }
+    if (!negctl_record(nc, "the ball's share without the cosine", "cosine-weighted share z-test",
+                       z_nocos >= thr))
+        fail_msg("the share without the cosine was not told apart: |z| %.2f", z_nocos);
+
+    rt_path_settings ps = rt_path_settings_default(RT_BDPT);
+    ps.max_depth = 3;
+    rt_camera cam = rt_camera_make(cp, 8, 8);
+    rt_bdpt_ctx c = rt_bdpt_ctx_make(s, &ps, &cam);
+    const rt_material *floor_m = NULL;
+    rt_hit h;
+    assert_true(rt_scene_hit(s, rt_ray_make(vec3_make(pts[1].x, 100.0, pts[1].z), vec3_neg(up)),
+                             HUGE_VAL, &h));
+    floor_m = rt_scene_material(s, h.material);
+    static const int want[2] = {RT_BDPT_THROUGH_RAYS_NEAR, RT_BDPT_THROUGH_RAYS};
+    for (int k = 0; k < 2; k++) {
+        rt_bdpt_vertex d = wall_vertex(pts[k], up, floor_m);
+        mc_rng aux = rt_bdpt_aux_stream(2701u, (uint64_t)k);
+        uint64_t seg = 0;
+        (void)rt_bdpt_through_estimate(&c, &d, 2, &aux, &seg);
+        printf("through term at floor point %d: %llu rays (want %d)\n", k, (unsigned long long)seg,
+               want[k]);
+        assert_true(seg == (uint64_t)want[k]);
+    }
     rt_scene_destroy(s);
 }
 
@@ -1049,6 +1129,7 @@ int main(void)
         cmocka_unit_test(test_furnace_at_largest_depth),
         cmocka_unit_test(test_seen_rays_exact),
         cmocka_unit_test(test_seen_rays_bounded),
+        cmocka_unit_test(test_through_rays_near_the_ball),
     };
     mc_test_select();
     return cmocka_run_group_tests_name("test_render_values", tests, negctl_group_setup,
