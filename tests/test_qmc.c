@@ -90,25 +90,6 @@ static uint32_t top(uint32_t v, unsigned bits)
     return (uint32_t)(((uint64_t)v << bits) >> 32);
 }
 
-/* Whether the n = 2^m points (x[i], y[i]) (32-bit fractions) are a
- * (0,m,2)-net in base 2: every elementary interval of area 2^-m, of shape
- * 2^-a by 2^-(m-a), holds exactly one point. Also each 1D projection is
- * then stratified (a = m and a = 0). */
-static bool is_02_net(const uint32_t *x, const uint32_t *y, unsigned m)
-{
-    static unsigned char count[1u << 12];
-    uint32_t n = 1u << m;
-    for (unsigned a = 0; a <= m; a++) {
-        memset(count, 0, n);
-        for (uint32_t i = 0; i < n; i++) {
-            uint32_t cell = (top(x[i], a) << (m - a)) | top(y[i], m - a);
-            if (count[cell]++ != 0u)
-                return false;
-        }
-    }
-    return true;
-}
-
 enum source { UNSCRAMBLED, XOR, OWEN, PCG, MULT_SCRAMBLE };
 
 /* The first n points of dimensions (d, d+1) of a source as 32-bit
@@ -154,13 +135,13 @@ static void test_qmc_sobol_net_property(void **state)
     int nets = 0;
     for (unsigned m = 2; m <= 12u; m++) {
         fill(UNSCRAMBLED, 0u, 0u, 1u << m, x, y);
-        assert_true(is_02_net(x, y, m));
+        assert_true(mc_test_is_02_net(x, y, m));
         nets++;
         for (uint64_t s = 0; s < 4u; s++) {
             fill(XOR, seed + s, 0u, 1u << m, x, y);
-            assert_seeded(is_02_net(x, y, m), seed + s);
+            assert_seeded(mc_test_is_02_net(x, y, m), seed + s);
             fill(OWEN, seed + s, 0u, 1u << m, x, y);
-            assert_seeded(is_02_net(x, y, m), seed + s);
+            assert_seeded(mc_test_is_02_net(x, y, m), seed + s);
             nets += 2;
         }
     }
@@ -168,10 +149,10 @@ static void test_qmc_sobol_net_property(void **state)
            nets);
     fill(PCG, seed, 0u, 1u << 8, x, y);
     assert_seeded(
-        negctl_record(t, "PCG32 points as a net", "(0,m,2)-net check", !is_02_net(x, y, 8)), seed);
+        negctl_record(t, "PCG32 points as a net", "(0,m,2)-net check", !mc_test_is_02_net(x, y, 8)), seed);
     fill(MULT_SCRAMBLE, seed, 0u, 1u << 8, x, y);
     assert_true(negctl_record(t, "non-nested scramble (XOR then multiply)", "(0,m,2)-net check",
-                              !is_02_net(x, y, 8)));
+                              !mc_test_is_02_net(x, y, 8)));
 }
 
 /* Every one of the 1024 dimensions is a (0,1)-sequence: the first 2^m
@@ -212,7 +193,7 @@ static void test_qmc_hammersley(void **state)
             x[i] = (uint32_t)(p[0] * 0x1p32);
             y[i] = (uint32_t)(p[1] * 0x1p32);
         }
-        assert_true(is_02_net(x, y, m));
+        assert_true(mc_test_is_02_net(x, y, m));
     }
     static unsigned char seen[243];
     memset(seen, 0, sizeof seen);
@@ -601,7 +582,7 @@ static void test_qmc_padded_pairs(void **state)
                     x[k] = (uint32_t)(u[0] * 0x1p32);
                     y[k] = (uint32_t)(u[1] * 0x1p32);
                 }
-                assert_seeded(m == 0u || is_02_net(x, y, m), seed);
+                assert_seeded(m == 0u || mc_test_is_02_net(x, y, m), seed);
             }
         }
     }

@@ -374,6 +374,102 @@ static void test_furnace_and_sphere_light(void **state)
     rt_scene_destroy(s);
 }
 
+/* The image's sequence (rt_sampler_image_point), which a light subpath's
+ * start draws from with Sobol points: a 16 x 16 image of 16 samples per
+ * pixel (2^12 samples, seed 2801). Every value is in [0, 1); dimensions 0
+ * and 1 over all the image's samples are a (0,12,2)-net, and over each
+ * pixel's 16 samples a (0,4,2)-net; each of dimensions 0 to 4 alone
+ * puts one of the 2^12 points in each interval of 2^-12; the sampler of
+ * another seed gives other points. Past 2^32 indices a sample takes a
+ * fresh scramble: the point of index 2^32 + j differs from that of j,
+ * from a pixel that starts at 2^32 and from one whose samples cross it.
+ * Negative control: the padded requests of the same samples (dimensions 0
+ * and 1 of each pixel's own set, rt_sampler_2d) are not a net over the
+ * image. */
+/* Whether the 2^m 32-bit fractions v put one in each interval of 2^-m. */
+static bool strata_once(const uint32_t *v, unsigned m)
+{
+    static unsigned char hit[1u << 12];
+    uint32_t n = 1u << m;
+    memset(hit, 0, n);
+    for (uint32_t i = 0; i < n; i++)
+        if (hit[v[i] >> (32u - m)]++ != 0u)
+            return false;
+    return true;
+}
+
+static void test_image_sequence(void **state)
+{
+    negctl *nc = *state;
+    enum { PIX = 256, SPP = 16, N = PIX * SPP, M = 12 };
+    uint64_t seed = mc_test_seed(2801u);
+    static uint32_t x[N], y[N], px[N], py[N], one[RT_SAMPLER_IMAGE_DIMS][N];
+    int other_seed_differs = 0;
+    for (uint64_t p = 0; p < PIX; p++) {
+        rt_sampler s = rt_sampler_pixel(RT_SAMPLER_SOBOL, seed, SPP, mc_rng_derive(seed, p), p);
+        rt_sampler o = rt_sampler_pixel(RT_SAMPLER_SOBOL, seed + 1u, SPP, mc_rng_derive(seed, p), p);
+        uint32_t bx[SPP], by[SPP];
+        for (uint64_t k = 0; k < SPP; k++) {
+            double u[RT_SAMPLER_IMAGE_DIMS], v[RT_SAMPLER_IMAGE_DIMS], w[2];
+            rt_sampler_start(&s, k);
+            rt_sampler_start(&o, k);
+            rt_sampler_image_point(&s, RT_SAMPLER_IMAGE_DIMS, u);
+            rt_sampler_image_point(&o, RT_SAMPLER_IMAGE_DIMS, v);
+            rt_sampler_2d(&s, &w[0], &w[1]);
+            size_t g = (size_t)(p * SPP + k);
+            for (unsigned d = 0; d < RT_SAMPLER_IMAGE_DIMS; d++) {
+                assert_true(u[d] >= 0.0 && u[d] < 1.0);
+                one[d][g] = (uint32_t)(u[d] * 0x1p32);
+                other_seed_differs += u[d] != v[d];
+            }
+            x[g] = bx[k] = one[0][g];
+            y[g] = by[k] = one[1][g];
+            px[g] = (uint32_t)(w[0] * 0x1p32);
+            py[g] = (uint32_t)(w[1] * 0x1p32);
+        }
+        assert_seeded(mc_test_is_02_net(bx, by, 4u), seed);
+    }
+    assert_seeded(mc_test_is_02_net(x, y, M), seed);
+    for (unsigned d = 0; d < RT_SAMPLER_IMAGE_DIMS; d++)
+        assert_seeded(strata_once(one[d], M), seed);
+    assert_true(other_seed_differs > N);
+    /* Index 2^32 + j against j: a pixel whose samples start at 2^32. */
+    uint64_t spp = 1u << 16, pixel = (uint64_t)1 << 16;
+    rt_sampler far = rt_sampler_pixel(RT_SAMPLER_SOBOL, seed, spp, mc_rng_derive(seed, 0u), pixel);
+    rt_sampler near = rt_sampler_pixel(RT_SAMPLER_SOBOL, seed, spp, mc_rng_derive(seed, 0u), 0u);
+    int same = 0;
+    for (uint64_t k = 0; k < 64u; k++) {
+        double a[2], b[2];
+        rt_sampler_start(&far, k);
+        rt_sampler_start(&near, k);
+        rt_sampler_image_point(&far, 2u, a);
+        rt_sampler_image_point(&near, 2u, b);
+        assert_true(a[0] >= 0.0 && a[0] < 1.0 && a[1] >= 0.0 && a[1] < 1.0);
+        same += a[0] == b[0] && a[1] == b[1];
+    }
+    /* A pixel whose samples cross 2^32: 48 spp from index 2^32 - 16. */
+    rt_sampler cross = rt_sampler_pixel(RT_SAMPLER_SOBOL, seed, 48u, mc_rng_derive(seed, 0u),
+                                        89478485u);
+    rt_sampler start = rt_sampler_pixel(RT_SAMPLER_SOBOL, seed, 48u, mc_rng_derive(seed, 0u), 0u);
+    for (uint64_t k = 16; k < 48u; k++) {
+        double a[2], b[2];
+        rt_sampler_start(&cross, k);
+        rt_sampler_start(&start, k - 16u);
+        rt_sampler_image_point(&cross, 2u, a);
+        rt_sampler_image_point(&start, 2u, b);
+        assert_true(a[0] >= 0.0 && a[0] < 1.0 && a[1] >= 0.0 && a[1] < 1.0);
+        same += a[0] == b[0] && a[1] == b[1];
+    }
+    printf("image sequence, 16 x 16 pixels x 16 spp: dimensions 0 and 1 a (0,12,2)-net over the "
+           "image and a (0,4,2)-net in every pixel, dimensions 0-4 each stratified; another seed "
+           "changed %d of %d values; past 2^32, %d of 96 points repeat\n",
+           other_seed_differs, N * (int)RT_SAMPLER_IMAGE_DIMS, same);
+    assert_int_equal(same, 0);
+    if (!negctl_record(nc, "the pixels' padded points as one set over the image",
+                       "(0,12,2)-net check", !mc_test_is_02_net(px, py, M)))
+        fail_msg("the padded points of the pixels passed as one net over the image");
+}
+
 /* Splatted images are bit-identical for 1, 2 and 3 threads (book, bdpt,
  * and lighttrace on lambert, 16 x 16, 8 samples per pixel, a pass of 3
  * so that passes end mid-render), and a render cancelled from its
@@ -557,6 +653,7 @@ int main(void)
         cmocka_unit_test(test_strategy_parse),
         cmocka_unit_test(test_mis_weights_sum_to_one),
         cmocka_unit_test(test_emit_aim_density),
+        cmocka_unit_test(test_image_sequence),
         cmocka_unit_test(test_threads_and_cancel),
         cmocka_unit_test(test_unweighted_strategies_agree_per_length),
         cmocka_unit_test(test_agree_with_mixture),

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "mc/stats.h"
 
@@ -105,4 +106,27 @@ void mc_test_select(void)
     const char *only = getenv("MC_TEST_ONLY");
     if (only && *only)
         cmocka_set_test_filter(only);
+}
+
+/* The top `bits` bits of a 32-bit fraction (0 <= bits <= 32). */
+static uint32_t top_bits(uint32_t v, unsigned bits)
+{
+    return (uint32_t)(((uint64_t)v << bits) >> 32);
+}
+
+bool mc_test_is_02_net(const uint32_t *x, const uint32_t *y, unsigned m)
+{
+    static _Thread_local unsigned char count[1u << 12];
+    if (m > 12u)
+        return false;
+    uint32_t n = 1u << m;
+    for (unsigned a = 0; a <= m; a++) {
+        memset(count, 0, n);
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t cell = (top_bits(x[i], a) << (m - a)) | top_bits(y[i], m - a);
+            if (count[cell]++ != 0u)
+                return false;
+        }
+    }
+    return true;
 }

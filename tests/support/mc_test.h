@@ -59,4 +59,10 @@ const char *mc_test_source_dir(void);
  * of a long program. Call before cmocka_run_group_tests. */
 void mc_test_select(void);
 
+/* Whether the n = 2^m points (x[i], y[i]) (32-bit fractions), m <= 12,
+ * are a (0,m,2)-net in base 2: every elementary interval of area 2^-m,
+ * of shape 2^-a by 2^-(m-a), holds exactly one point. Each 1D projection
+ * is then stratified too (a = m and a = 0). */
+bool mc_test_is_02_net(const uint32_t *x, const uint32_t *y, unsigned m);
+
 #endif /* MC_TEST_H */
