@@ -149,7 +149,9 @@ static void test_qmc_sobol_net_property(void **state)
            nets);
     fill(PCG, seed, 0u, 1u << 8, x, y);
     assert_seeded(
-        negctl_record(t, "PCG32 points as a net", "(0,m,2)-net check", !mc_test_is_02_net(x, y, 8)), seed);
+        negctl_record(t, "PCG32 points as a net", "(0,m,2)-net check",
+                      !mc_test_is_02_net(x, y, 8)),
+        seed);
     fill(MULT_SCRAMBLE, seed, 0u, 1u << 8, x, y);
     assert_true(negctl_record(t, "non-nested scramble (XOR then multiply)", "(0,m,2)-net check",
                               !mc_test_is_02_net(x, y, 8)));

@@ -407,7 +407,8 @@ static void test_image_sequence(void **state)
     int other_seed_differs = 0;
     for (uint64_t p = 0; p < PIX; p++) {
         rt_sampler s = rt_sampler_pixel(RT_SAMPLER_SOBOL, seed, SPP, mc_rng_derive(seed, p), p);
-        rt_sampler o = rt_sampler_pixel(RT_SAMPLER_SOBOL, seed + 1u, SPP, mc_rng_derive(seed, p), p);
+        rt_sampler o =
+            rt_sampler_pixel(RT_SAMPLER_SOBOL, seed + 1u, SPP, mc_rng_derive(seed, p), p);
         uint32_t bx[SPP], by[SPP];
         for (uint64_t k = 0; k < SPP; k++) {
             double u[RT_SAMPLER_IMAGE_DIMS], v[RT_SAMPLER_IMAGE_DIMS], w[2];
