@@ -211,6 +211,7 @@ vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int
     vec3 sum = vec3_make(0.0, 0.0, 0.0);
     onb frame = onb_from_w(d->ns);
     uint64_t key = ((uint64_t)mc_rng_u32(aux) << 32) | mc_rng_u32(aux);
+    uint32_t key0 = mc_qmc_key(key, 0u, 0u), key1 = mc_qmc_key(key, 0u, 1u);
     int left = max_segments(c) - jd;
     int n = rt_bdpt_target_share(c->scene, d->p, d->ns) > RT_BDPT_THROUGH_NEAR
                 ? RT_BDPT_THROUGH_RAYS_NEAR
@@ -219,8 +220,8 @@ vec3 rt_bdpt_through_estimate(const rt_bdpt_ctx *c, const rt_bdpt_vertex *d, int
     rt_hit h[RT_BDPT_THROUGH_RAYS_NEAR];
     bool hit[RT_BDPT_THROUGH_RAYS_NEAR];
     for (int i = 0; i < n; i++) {
-        double u1 = mc_sobol_owen((uint32_t)i, 0u, key, 0u);
-        double u2 = mc_sobol_owen((uint32_t)i, 1u, key, 0u);
+        double u1 = mc_sobol_owen_keyed((uint32_t)i, 0u, key0);
+        double u2 = mc_sobol_owen_keyed((uint32_t)i, 1u, key1);
         r[i] = rt_ray_make(d->p, pdf_cosine_direction(&frame, u1, u2));
     }
     if (left >= 1) {
