@@ -386,18 +386,6 @@ static void test_furnace_and_sphere_light(void **state)
  * Negative control: the padded requests of the same samples (dimensions 0
  * and 1 of each pixel's own set, rt_sampler_2d) are not a net over the
  * image. */
-/* Whether the 2^m 32-bit fractions v put one in each interval of 2^-m. */
-static bool strata_once(const uint32_t *v, unsigned m)
-{
-    static unsigned char hit[1u << 12];
-    uint32_t n = 1u << m;
-    memset(hit, 0, n);
-    for (uint32_t i = 0; i < n; i++)
-        if (hit[v[i] >> (32u - m)]++ != 0u)
-            return false;
-    return true;
-}
-
 static void test_image_sequence(void **state)
 {
     negctl *nc = *state;
@@ -432,7 +420,7 @@ static void test_image_sequence(void **state)
     }
     assert_seeded(mc_test_is_02_net(x, y, M), seed);
     for (unsigned d = 0; d < RT_SAMPLER_IMAGE_DIMS; d++)
-        assert_seeded(strata_once(one[d], M), seed);
+        assert_seeded(mc_test_strata_once(one[d], M), seed);
     assert_true(other_seed_differs > N);
     /* Index 2^32 + j against j: a pixel whose samples start at 2^32. */
     uint64_t spp = 1u << 16, pixel = (uint64_t)1 << 16;

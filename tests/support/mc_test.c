@@ -130,3 +130,16 @@ bool mc_test_is_02_net(const uint32_t *x, const uint32_t *y, unsigned m)
     }
     return true;
 }
+
+bool mc_test_strata_once(const uint32_t *v, unsigned m)
+{
+    static _Thread_local unsigned char hit[1u << 12];
+    if (m > 12u)
+        return false;
+    uint32_t n = 1u << m;
+    memset(hit, 0, n);
+    for (uint32_t i = 0; i < n; i++)
+        if (hit[top_bits(v[i], m)]++ != 0u)
+            return false;
+    return true;
+}

@@ -65,4 +65,8 @@ void mc_test_select(void);
  * is then stratified too (a = m and a = 0). */
 bool mc_test_is_02_net(const uint32_t *x, const uint32_t *y, unsigned m);
 
+/* Whether the n = 2^m values v[i] (32-bit fractions), m <= 12, put one in
+ * each interval of length 2^-m: a stratified 1D set. */
+bool mc_test_strata_once(const uint32_t *v, unsigned m);
+
 #endif /* MC_TEST_H */
